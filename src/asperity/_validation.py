@@ -1,0 +1,72 @@
+"""Input checks shared by every public function.
+
+Each check raises :class:`ValueError` naming the parameter and its valid range, so a
+user never meets a silent NaN or a traceback from deep inside SciPy.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "as_float_array",
+    "check_nonnegative",
+    "check_poisson",
+    "check_positive",
+    "check_range",
+    "scalar",
+]
+
+
+def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray:
+    """Convert ``value`` to a float array; reject NaN, infinity and (by default) emptiness."""
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a real number or an array of real numbers, "
+                         f"got {value!r}") from None
+    if arr.size == 0 and not allow_empty:
+        raise ValueError(f"{name} must not be empty")
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} must be finite (no NaN or infinity), got {value!r}")
+    return arr
+
+
+def check_positive(value, name: str) -> np.ndarray:
+    """``value`` as a float array; every element must satisfy 0 < value < inf."""
+    arr = as_float_array(value, name)
+    if np.any(arr <= 0):
+        raise ValueError(f"{name} must be > 0 (valid range 0 < {name} < inf), got {value!r}")
+    return arr
+
+
+def check_nonnegative(value, name: str) -> np.ndarray:
+    """``value`` as a float array; every element must satisfy 0 <= value < inf."""
+    arr = as_float_array(value, name)
+    if np.any(arr < 0):
+        raise ValueError(f"{name} must be >= 0 (valid range 0 <= {name} < inf), got {value!r}")
+    return arr
+
+
+def check_range(value, name: str, lo: float, hi: float) -> np.ndarray:
+    """``value`` as a float array; every element must satisfy lo <= value <= hi."""
+    arr = as_float_array(value, name)
+    if np.any((arr < lo) | (arr > hi)):
+        raise ValueError(f"{name} must lie in [{lo:g}, {hi:g}], got {value!r}")
+    return arr
+
+
+def check_poisson(nu) -> np.ndarray:
+    """Poisson's ratio of an isotropic elastic solid: -1 < nu < 0.5."""
+    arr = as_float_array(nu, "nu")
+    if np.any((arr <= -1.0) | (arr >= 0.5)):
+        raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 0.5), got {nu!r}")
+    return arr
+
+
+def scalar(value, name: str) -> float:
+    """A scalar parameter (0-d); arrays are rejected with a clear message."""
+    arr = np.asarray(value)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a scalar here, got an array of shape {arr.shape}")
+    return float(arr)

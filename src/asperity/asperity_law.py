@@ -1,0 +1,143 @@
+r"""One asperity in the model's units: contact radius and force versus penetration.
+
+This joins the single-asperity laws to the multi-asperity integrals.  For an asperity
+of height :math:`\bar z` at separation :math:`\bar d` the penetration is
+:math:`\bar u = \bar z - \bar d` (in units of :math:`\sigma`), and
+
+* without adhesion (:math:`\gamma = 0`): Hertz, Eq (8) and the integrand of Eq (6);
+* with adhesion (:math:`\gamma > 0`): Maugis-Dugdale through Eq (17) (corrected
+  :math:`\hat P`): :math:`\Delta_M = \bar u/\hat\delta`, :math:`\bar a = A_M/\hat A`,
+  :math:`\bar P = P_M/\hat P`, on the stable branch, down to its end at
+  :math:`\bar u_{end} = \hat\delta\Delta_{end} < 0`.  Asperities below carry nothing.
+
+Forces are per asperity in units of :math:`G b^2`; radii in units of :math:`b`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import optimize
+
+from . import groups
+from ._validation import as_float_array, check_nonnegative, check_poisson, check_positive
+from .friction_stress import FrictionLaw, HurtadoKim
+from .hertz import hertz_force, hertz_radius
+from .maugis_dugdale import _curve, md_branch_end, md_solve
+
+__all__ = ["ModelParameters", "AsperityLaw"]
+
+
+@dataclass(frozen=True)
+class ModelParameters:
+    """The dimensionless parameters of the model, validated once.
+
+    Parameters
+    ----------
+    alpha : float
+        Surface roughness parameter :math:`(\\sigma/R)^{1/2} > 0` (Eq 7).
+    beta : float
+        Friction regime parameter :math:`(R\\sigma)^{1/2}/b > 0` (Eq 7).
+    gamma : float
+        Adhesion parameter :math:`w/(E^* b) \\ge 0` (Eq 16); 0 means Hertz (no adhesion).
+    nu : float
+        Poisson's ratio of the elastic body, -1 < nu < 0.5 (the paper does not state it;
+        0.3 by default).
+    h_over_b : float
+        Dugdale range over Burgers vector, :math:`h/b > 0` (paper: 1), enters Eq (15).
+    friction : FrictionLaw
+        Single-asperity friction stress law (default: Hurtado-Kim with the paper's values).
+    """
+
+    alpha: float
+    beta: float
+    gamma: float = 0.0
+    nu: float = 0.3
+    h_over_b: float = 1.0
+    friction: FrictionLaw = field(default_factory=HurtadoKim)
+
+    def __post_init__(self):
+        for name, check in (("alpha", check_positive), ("beta", check_positive),
+                            ("gamma", check_nonnegative), ("h_over_b", check_positive)):
+            value = getattr(self, name)
+            if np.ndim(value) != 0:
+                raise ValueError(f"{name} must be a scalar, got shape {np.shape(value)}")
+            object.__setattr__(self, name, float(check(value, name)))
+        if np.ndim(self.nu) != 0:
+            raise ValueError("nu must be a scalar")
+        object.__setattr__(self, "nu", float(check_poisson(self.nu)))
+        if not isinstance(self.friction, FrictionLaw):
+            raise ValueError("friction must provide stress(a_bar) and breakpoints() "
+                             "(e.g. HurtadoKim() or ConstantShear(tau))")
+
+    @property
+    def adhesive(self) -> bool:
+        return self.gamma > 0.0
+
+
+class AsperityLaw:
+    """Contact radius and force of one asperity versus its penetration (model units)."""
+
+    def __init__(self, params: ModelParameters):
+        self.params = p = params
+        if p.adhesive:
+            self.lam = float(groups.maugis_lambda(p.alpha, p.beta, p.gamma, p.h_over_b))
+            self.delta_hat = float(groups.penetration_scale(p.alpha, p.beta, p.gamma))
+            self.P_hat = float(groups.load_scale(p.alpha, p.beta, p.gamma, p.nu))
+            self.A_hat = float(groups.radius_scale(p.alpha, p.beta, p.gamma))
+            self.end = md_branch_end(self.lam)
+            self.u_end = self.delta_hat * self.end.delta
+            # Maugis-Dugdale varies on Delta ~ 1, and near the branch end on |Delta_end|.
+            self.scale = self.delta_hat * min(1.0, abs(self.end.delta))
+        else:
+            self.lam = 0.0
+            self.u_end = 0.0
+            self.scale = 1.0
+        self.breakpoints = self._friction_breakpoints()
+
+    def _friction_breakpoints(self) -> tuple[float, ...]:
+        """Penetrations where the contact radius crosses the friction law's breakpoints."""
+        p = self.params
+        out = []
+        for a_k in p.friction.breakpoints():
+            if not p.adhesive:
+                out.append((a_k / p.beta) ** 2)
+                continue
+            target = a_k * self.A_hat
+            if target <= self.end.A:
+                continue  # the whole stable branch lies above this radius
+            # A(t) decreases along the curve: find t with A(t) = target, in log10 t.
+            f = lambda s, target=target: np.log(_curve(10.0**s, self.lam)[0] / target)  # noqa: E731
+            lo, hi = -20.0, 20.0 if np.isinf(self.end.t) else np.log10(self.end.t)
+            while f(lo) < 0:
+                lo -= 10.0
+            while np.isinf(self.end.t) and f(hi) > 0:
+                hi += 10.0
+            s = optimize.brentq(f, lo, hi, xtol=1e-15)
+            out.append(self.delta_hat * float(_curve(10.0**s, self.lam)[2]))
+        return tuple(sorted(out))
+
+    def evaluate(self, u_bar):
+        """Contact radius :math:`\\bar a` and force :math:`P/(Gb^2)` at penetrations ``u_bar``.
+
+        Penetrations below the end of the stable branch give zero radius and force.
+        """
+        p = self.params
+        u = as_float_array(u_bar, "u_bar", allow_empty=True)
+        if not p.adhesive:
+            return hertz_radius(u, p.beta), hertz_force(u, p.alpha, p.beta, p.nu)
+        a = np.zeros_like(u)
+        P = np.zeros_like(u)
+        on = u >= self.u_end
+        if np.any(on):
+            delta = np.maximum(u[on] / self.delta_hat, self.end.delta)
+            A, PM, _ = md_solve(delta, self.lam)
+            a[on] = A / self.A_hat
+            P[on] = PM / self.P_hat
+        return a, P
+
+    def friction(self, a_bar):
+        """Friction force :math:`F_f/(Gb^2) = 2\\pi\\bar\\tau_f\\bar a^2` (Eq 10 integrand)."""
+        a = np.asarray(a_bar, dtype=float)
+        return 2.0 * np.pi * self.params.friction.stress(a) * a * a

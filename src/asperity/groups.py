@@ -1,0 +1,199 @@
+r"""Dimensionless groups of the model (Eqs 7, 15-17, 20).
+
+=================  ===========================================  ==========
+symbol             definition                                   equation
+=================  ===========================================  ==========
+alpha              :math:`(\sigma/R)^{1/2}` surface roughness   Eq 7
+beta               :math:`(R\sigma)^{1/2}/b` friction regime    Eq 7
+gamma              :math:`w/(E^* b)` adhesion/compliance        Eq 16
+lambda             Maugis parameter from alpha, beta, gamma     Eq 15
+delta_hat          :math:`\bar u = \Delta_M\hat\delta`          Eq 17
+P_hat              :math:`\bar P = P_M/\hat P`                  Eq 17
+A_hat              :math:`\bar a = A_M/\hat A`                  Eq 17
+sigma/b, R/b       :math:`\alpha\beta`, :math:`\beta/\alpha`    Eq 20
+=================  ===========================================  ==========
+
+One body is elastic (:math:`E`, :math:`\nu`), the other rigid and flat, so
+:math:`E^* = E/(1-\nu^2)`, :math:`G = E/2(1+\nu)` and :math:`E^*/G = 2/(1-\nu)`.
+
+**Correction to Eq (17).**  The paper prints
+:math:`\hat P = (1-\nu)\alpha^2/(2\pi\beta\gamma)`.  From :math:`\bar P = P/(Gb^2)`,
+:math:`P_M = P/(\pi w R)`, :math:`w = \gamma E^* b`, :math:`R = b\beta/\alpha`:
+:math:`\bar P = P_M\,\pi\gamma\beta(E^*/G)/\alpha`, i.e.
+:math:`\hat P = (1-\nu)\alpha/(2\pi\beta\gamma)`.  Only this form tends to Eq (6) as
+:math:`\gamma \to 0`; :func:`load_scale` takes ``form='printed'`` to show the other.
+
+References
+----------
+Adams, Müftü, Mohd Azhar, Eqs (7), (15)-(17), (20).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ._validation import check_poisson, check_positive
+
+__all__ = [
+    "roughness_alpha",
+    "regime_beta",
+    "adhesion_gamma",
+    "composite_modulus",
+    "modulus_ratio",
+    "maugis_lambda",
+    "penetration_scale",
+    "load_scale",
+    "radius_scale",
+    "sigma_over_b",
+    "radius_over_b",
+]
+
+
+def roughness_alpha(sigma, R):
+    r"""Surface roughness parameter :math:`\alpha = (\sigma/R)^{1/2}` (Eq 7).
+
+    Parameters
+    ----------
+    sigma : array_like
+        Standard deviation of asperity (summit) heights, > 0.
+    R : array_like
+        Asperity radius of curvature, > 0 (same unit as ``sigma``).
+
+    References
+    ----------
+    Adams et al., Eq (7).
+    """
+    return np.sqrt(check_positive(sigma, "sigma") / check_positive(R, "R"))
+
+
+def regime_beta(sigma, R, b):
+    r"""Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b` (Eq 7).
+
+    Parameters
+    ----------
+    sigma, R, b : array_like
+        Summit height deviation, summit radius and Burgers vector, > 0 (one length unit).
+
+    References
+    ----------
+    Adams et al., Eq (7).
+    """
+    return np.sqrt(check_positive(sigma, "sigma") * check_positive(R, "R")) / check_positive(b, "b")
+
+
+def adhesion_gamma(w, E_star, b):
+    r"""Surface energy/compliance coefficient :math:`\gamma = w/(E^* b)` (Eq 16).
+
+    Parameters
+    ----------
+    w : array_like
+        Work of adhesion (J/m^2), > 0.
+    E_star : array_like
+        Composite Young's modulus (Pa), > 0.
+    b : array_like
+        Burgers vector (m), > 0.
+
+    References
+    ----------
+    Adams et al., Eq (16).
+    """
+    return check_positive(w, "w") / (check_positive(E_star, "E_star") * check_positive(b, "b"))
+
+
+def composite_modulus(E, nu):
+    r""":math:`E^* = E/(1-\nu^2)` of an elastic body against a rigid flat."""
+    return check_positive(E, "E") / (1.0 - check_poisson(nu) ** 2)
+
+
+def modulus_ratio(nu):
+    r""":math:`E^*/G = 2/(1-\nu)`, used to pass from :math:`E^*` to :math:`G` units (Eq 6)."""
+    return 2.0 / (1.0 - check_poisson(nu))
+
+
+def maugis_lambda(alpha, beta, gamma, h_over_b=1.0):
+    r"""Maugis parameter from the paper's groups (Eq 15).
+
+    .. math::
+        \lambda = \frac{b}{h}\Big(\frac{9\beta\gamma^2}{2\pi\alpha}\Big)^{1/3}
+
+    Parameters
+    ----------
+    alpha, beta, gamma : array_like
+        The model's groups, all > 0.
+    h_over_b : array_like
+        Dugdale range over Burgers vector, :math:`h/b > 0` (paper: 1).
+
+    References
+    ----------
+    Adams et al., Eq (15).
+    """
+    alpha = check_positive(alpha, "alpha")
+    beta = check_positive(beta, "beta")
+    gamma = check_positive(gamma, "gamma")
+    h_over_b = check_positive(h_over_b, "h_over_b")
+    return np.cbrt(9.0 * beta * gamma**2 / (2.0 * np.pi * alpha)) / h_over_b
+
+
+def penetration_scale(alpha, beta, gamma):
+    r""":math:`\hat\delta = (3\pi\gamma/4\alpha^2\beta)^{2/3}`, with :math:`\bar u = \Delta_M\hat\delta` (Eq 17).
+
+    References
+    ----------
+    Adams et al., Eq (17).
+    """
+    alpha = check_positive(alpha, "alpha")
+    beta = check_positive(beta, "beta")
+    gamma = check_positive(gamma, "gamma")
+    return np.cbrt(3.0 * np.pi * gamma / (4.0 * alpha**2 * beta)) ** 2
+
+
+def load_scale(alpha, beta, gamma, nu=0.3, form: str = "derived"):
+    r""":math:`\hat P` with :math:`\bar P = P_M/\hat P` (Eq 17, corrected).
+
+    Parameters
+    ----------
+    alpha, beta, gamma : array_like
+        The model's groups, > 0.
+    nu : array_like
+        Poisson's ratio.
+    form : {'derived', 'printed'}
+        ``'derived'`` (default): :math:`(1-\nu)\alpha/(2\pi\beta\gamma)`, which follows from
+        the definitions and tends to Eq (6) as :math:`\gamma\to 0`.  ``'printed'``: the
+        paper's :math:`(1-\nu)\alpha^2/(2\pi\beta\gamma)`, kept only for comparison.
+
+    References
+    ----------
+    Adams et al., Eq (17); see ``docs/decisions.md``.
+    """
+    alpha = check_positive(alpha, "alpha")
+    beta = check_positive(beta, "beta")
+    gamma = check_positive(gamma, "gamma")
+    nu = check_poisson(nu)
+    if form == "derived":
+        return (1.0 - nu) * alpha / (2.0 * np.pi * beta * gamma)
+    if form == "printed":
+        return (1.0 - nu) * alpha**2 / (2.0 * np.pi * beta * gamma)
+    raise ValueError(f"form must be 'derived' or 'printed', got {form!r}")
+
+
+def radius_scale(alpha, beta, gamma):
+    r""":math:`\hat A = [4(\alpha/\beta)^2/(3\pi\gamma)]^{1/3}`, with :math:`\bar a = A_M/\hat A` (Eq 17).
+
+    References
+    ----------
+    Adams et al., Eq (17).
+    """
+    alpha = check_positive(alpha, "alpha")
+    beta = check_positive(beta, "beta")
+    gamma = check_positive(gamma, "gamma")
+    return np.cbrt(4.0 * (alpha / beta) ** 2 / (3.0 * np.pi * gamma))
+
+
+def sigma_over_b(alpha, beta):
+    r""":math:`\sigma/b = \alpha\beta` (Eq 20)."""
+    return check_positive(alpha, "alpha") * check_positive(beta, "beta")
+
+
+def radius_over_b(alpha, beta):
+    r""":math:`R/b = \beta/\alpha` (Eq 20)."""
+    return check_positive(beta, "beta") / check_positive(alpha, "alpha")

@@ -1,0 +1,144 @@
+"""Curves, pull-off and the paper's published numbers (Table 1, Fig 7)."""
+
+import io
+
+import numpy as np
+import pytest
+
+import asperity
+
+TABLE1 = [  # alpha, beta, gamma, printed |P|/(N G b^2)
+    (0.002, 1000, 0.001, 2158.1), (0.003, 1000, 0.001, 320.1), (0.004, 1000, 0.001, 26.7),
+    (0.005, 1000, 0.001, 1.0), (0.01, 100, 0.001, 2.9), (0.01, 300, 0.001, 0.005),
+    (0.01, 1000, 0.005, 9.5), (0.01, 1000, 0.007, 81.2), (0.01, 1000, 0.010, 2480.8),
+]
+
+
+@pytest.mark.parametrize("row", TABLE1[:2])
+def test_table1_first_rows_match_the_paper(row):
+    alpha, beta, gamma, printed = row
+    assert asperity.pull_off(alpha, beta, gamma).force == pytest.approx(printed, rel=0.05)
+
+
+def test_table1_trends():
+    forces = [asperity.pull_off(a, b, g).force for a, b, g, _ in TABLE1]
+    assert all(f > 0 for f in forces)
+    # "low alpha and high gamma increase the pull-off force dramatically"
+    assert forces[0] > forces[1] > forces[2] > forces[3]
+    assert forces[6] < forces[7] < forces[8]
+    assert forces[0] / forces[3] > 100 and forces[8] / forces[6] > 10
+
+
+def test_fig7_force_changes_sign_near_2_6():
+    # Paper: for alpha 0.005, beta 1000, gamma 0.001 the force vanishes near d/sigma = 2.6.
+    c = asperity.separation_curve(np.linspace(2.0, 3.2, 121), 0.005, 1000, 1e-3)
+    crossing = c.d[np.flatnonzero(np.diff(np.sign(c.P)))[0]]
+    assert 2.4 < crossing < 2.8
+
+
+def test_pull_off_is_a_minimum_of_the_force():
+    po = asperity.pull_off(0.004, 1000, 1e-3)
+    d = po.d + np.array([-1e-3, 0.0, 1e-3])
+    P = asperity.separation_curve(d, 0.004, 1000, 1e-3).P
+    assert P[1] == pytest.approx(-po.force, rel=1e-12)
+    assert P[1] < P[0] and P[1] < P[2]
+
+
+def test_no_pull_off_without_adhesion():
+    po = asperity.pull_off(0.01, 1000, 0.0)
+    assert po.force == 0.0 and not po.exists and np.isnan(po.d)
+
+
+@pytest.mark.parametrize("gamma", [0.0, 1e-3])
+def test_load_curve_inverts_separation_curve(gamma):
+    P = np.logspace(-2, 5, 200)
+    lc = asperity.load_curve(P, 0.01, 1000, gamma)
+    sc = asperity.separation_curve(lc.d, 0.01, 1000, gamma)
+    np.testing.assert_allclose(sc.P, P, rtol=1e-10)
+    for k in ("F", "area", "contacts", "mu", "pressure"):
+        np.testing.assert_allclose(getattr(lc, k), getattr(sc, k), rtol=1e-10)
+    assert np.all(np.diff(lc.d) < 0)  # more load, closer surfaces
+
+
+def test_load_curve_tensile_loads_on_the_stable_branch():
+    po = asperity.pull_off(0.003, 1000, 1e-3)
+    P = np.array([-0.999 * po.force, -0.5 * po.force, 0.0, 10.0])
+    lc = asperity.load_curve(P, 0.003, 1000, 1e-3)
+    assert np.all(lc.d <= po.d + 1e-12)
+    sc = asperity.separation_curve(lc.d, 0.003, 1000, 1e-3)
+    np.testing.assert_allclose(sc.P, P, rtol=1e-9, atol=1e-9 * po.force)
+    assert np.isnan(lc.mu[:3]).all() and lc.F[2] > 0  # finite friction at zero load
+    with pytest.raises(ValueError, match="P"):
+        asperity.load_curve([-1.01 * po.force], 0.003, 1000, 1e-3)
+
+
+def test_large_loads():
+    lc = asperity.load_curve([1e8], 0.01, 100, 0.0)
+    assert lc.d[0] < -10
+    assert asperity.separation_curve(lc.d, 0.01, 100).P[0] == pytest.approx(1e8, rel=1e-10)
+
+
+def test_friction_coefficient_falls_with_load_and_rises_with_adhesion():
+    P = np.logspace(0, 5, 20)
+    dry = asperity.load_curve(P, 0.01, 1000, 0.0)
+    wet = asperity.load_curve(P, 0.01, 1000, 1e-3)
+    assert np.all(np.diff(dry.mu) < 0) and np.all(np.diff(wet.mu) < 0)
+    assert np.all(wet.mu > dry.mu)
+
+
+def test_result_object_conversions():
+    c = asperity.separation_curve([0.0, 1.0], 0.01, 1000, 1e-3)
+    frame = c.to_dataframe()
+    assert list(frame.columns) == ["d", "P", "F", "mu", "area", "pressure", "contacts"]
+    assert len(c) == 2 and frame.attrs["gamma"] == 1e-3
+    text = c.to_csv()
+    import pandas as pd
+    back = pd.read_csv(io.StringIO(text))
+    np.testing.assert_array_equal(back["P"].to_numpy(), c.P)
+    buf = io.StringIO()
+    c.to_csv(buf)
+    assert buf.getvalue() == text
+
+
+def test_model_reuses_its_tabulation():
+    m = asperity.Model(0.01, 1000, 1e-3)
+    a = m.load_curve([1.0, 2.0])
+    tab = m._tab
+    b = m.load_curve([1.0, 2.0])
+    assert m._tab is tab
+    np.testing.assert_array_equal(a.d, b.d)
+
+
+BAD = [
+    (dict(alpha=0.0), "alpha"), (dict(alpha=-1.0), "alpha"), (dict(beta=np.nan), "beta"),
+    (dict(gamma=-1e-3), "gamma"), (dict(nu=0.5), "nu"), (dict(nu=-1.0), "nu"),
+    (dict(h_over_b=0.0), "h_over_b"), (dict(beta=np.inf), "beta"),
+    (dict(alpha=[0.1, 0.2]), "alpha"),
+]
+
+
+@pytest.mark.parametrize("kwargs, name", BAD)
+def test_bad_parameters(kwargs, name):
+    args = dict(alpha=0.01, beta=1000.0, gamma=1e-3)
+    args.update(kwargs)
+    for call in (lambda: asperity.separation_curve([0.0], **args),
+                 lambda: asperity.load_curve([1.0], **args)):
+        with pytest.raises(ValueError, match=name):
+            call()
+
+
+@pytest.mark.parametrize("d", [[], [np.nan], [np.inf], [100.0], "abc"])
+def test_bad_separations(d):
+    with pytest.raises(ValueError, match="d"):
+        asperity.separation_curve(d, 0.01, 1000)
+
+
+@pytest.mark.parametrize("P", [[], [np.nan], [0.0], [-1.0]])
+def test_bad_loads_without_adhesion(P):
+    with pytest.raises(ValueError, match="P"):
+        asperity.load_curve(P, 0.01, 1000)
+
+
+def test_bad_d_max():
+    with pytest.raises(ValueError, match="d_max"):
+        asperity.pull_off(0.01, 1000, 1e-3, d_max=-1)

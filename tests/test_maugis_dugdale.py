@@ -1,0 +1,143 @@
+"""Maugis-Dugdale single asperity (Eqs 11-14) and its JKR, DMT and Hertz limits."""
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from asperity import dmt, hertz, jkr
+from asperity import maugis_dugdale as md
+
+
+def eq11_residual_mp(A, t, lam):
+    """Eq (11) in the paper's m form, evaluated at 50 digits."""
+    with mp.workdps(50):
+        A, t, lam = mp.mpf(A), mp.mpf(t), mp.mpf(lam)
+        m = mp.sqrt(1 + t * t)
+        r = mp.sqrt(m * m - 1)
+        lhs = (lam * A**2 / 2 * (r + (m * m - 2) * mp.atan(r))
+               + 4 * lam**2 * A / 3 * (r * mp.atan(r) - m + 1))
+        return float(lhs - 1)
+
+
+@pytest.mark.parametrize("t", [1e-6, 1e-3, 0.1, 0.49, 0.51, 2.0, 50.0, 1e5])
+@pytest.mark.parametrize("lam", [1e-3, 0.5, 1.0, 30.0])
+def test_radius_solves_eq11_to_rounding(t, lam):
+    A = float(md.md_radius(t, lam))
+    assert abs(eq11_residual_mp(A, t, lam)) < 1e-13
+
+
+def test_first_bracket_series_matches_high_precision():
+    for t in [1e-8, 1e-4, 0.01, 0.3, 0.4999, 0.5001, 3.0]:
+        with mp.workdps(60):
+            exact = float(mp.mpf(t) + (mp.mpf(t) ** 2 - 1) * mp.atan(mp.mpf(t)))
+        assert md._f1(np.float64(t)) == pytest.approx(exact, rel=2e-15)
+
+
+def test_lambda_c_matches_direct_search():
+    # Independent of the asymptotic formula: does Delta(t) have an interior minimum?
+    t = np.logspace(-3, 4, 20001)
+
+    def has_min(lam):
+        D = md.md_curve(t, lam)[2]
+        return bool(np.any(np.diff(D) > 1e-13))
+
+    assert md.LAMBDA_C == pytest.approx(0.93795, abs=5e-5)
+    assert not has_min(0.93)
+    assert has_min(0.95)
+
+
+def test_jkr_limit():
+    lam = 1e4
+    end = md.md_branch_end(lam)
+    A_jkr, P_jkr = jkr.jkr_pull_off("displacement")
+    assert end.A == pytest.approx(A_jkr, rel=1e-3) and A_jkr == pytest.approx(6 ** (-1 / 3))
+    assert end.P == pytest.approx(-5 / 6, rel=1e-3)
+    po = md.md_pull_off(lam, "load")
+    assert po.P == pytest.approx(-1.5, rel=1e-3)
+    assert po.A == pytest.approx(1.5 ** (1 / 3), rel=1e-3)
+    # whole curve at the same radius
+    A, P, D = md.md_curve(np.logspace(-6, -3, 7), lam)
+    np.testing.assert_allclose(P, jkr.jkr_load(A), rtol=2e-3, atol=2e-3)
+    np.testing.assert_allclose(D, jkr.jkr_penetration(A), rtol=2e-3, atol=2e-3)
+
+
+def test_dmt_limit():
+    lam = 1e-8
+    assert md.md_pull_off(lam, "load").P == pytest.approx(dmt.DMT_PULL_OFF, rel=1e-6)
+    assert md.md_branch_end(lam).P == pytest.approx(-2.0, rel=1e-6)
+    delta = np.array([0.5, 1.0, 4.0])
+    A, P, _ = md.md_solve(delta, lam)
+    np.testing.assert_allclose(P, dmt.dmt_load(A), rtol=1e-3)
+    np.testing.assert_allclose(delta, dmt.dmt_penetration(A), rtol=1e-3)
+
+
+def test_dmt_approach_is_sqrt_lambda():
+    # Delta_end ~ -(8/3) sqrt(lam/pi) as lam -> 0: DMT is reached only as lam^(1/2).
+    for lam in [1e-4, 1e-6, 1e-8]:
+        assert md.md_branch_end(lam).delta == pytest.approx(-(8 / 3) * math.sqrt(lam / math.pi),
+                                                            rel=3 * math.sqrt(lam))
+
+
+def test_hertz_at_large_penetration():
+    # Adhesion's share of the load falls like A^(-3/2) (JKR: sqrt(6 A^3) / A^3).
+    A, P, _ = md.md_solve(np.array([1e6, 1e10]), 1.0)
+    rel = np.abs(P / hertz.hertz_load_md(A) - 1)
+    assert rel[0] < 1e-4 and rel[1] < 1e-7
+    np.testing.assert_allclose(hertz.hertz_penetration_md(A), [1e6, 1e10], rtol=1e-4)
+
+
+@pytest.mark.parametrize("lam", [0.05, 0.5, 0.9, 0.99, 2.0, 20.0])
+def test_solve_inverts_penetration(lam):
+    end = md.md_branch_end(lam)
+    delta = np.concatenate([end.delta + np.logspace(-8, 0, 9) * abs(end.delta),
+                            np.linspace(0.1, 50, 11)])
+    A, P, t = md.md_solve(delta, lam)
+    A2, P2, D2 = md.md_curve(t, lam)
+    np.testing.assert_allclose(D2, delta, rtol=1e-12, atol=1e-13)
+    np.testing.assert_allclose(A, A2, rtol=1e-15)
+    assert np.all(np.diff(A) > 0)  # stable branch: A grows with Delta
+
+
+@given(st.floats(1e-3, 1e3), st.floats(0.0, 100.0), st.floats(0.0, 100.0))
+def test_radius_increases_with_penetration(lam, x, y):
+    end = md.md_branch_end(lam)
+    lo, hi = sorted((end.delta + x, end.delta + y))
+    A, _, _ = md.md_solve(np.array([lo, hi]), lam)
+    assert A[1] >= A[0]
+
+
+def test_branch_end_is_minimum_of_delta():
+    for lam in [1.0, 3.0, 100.0]:
+        end = md.md_branch_end(lam)
+        t = end.t * np.array([0.9, 0.99, 1.01, 1.1])
+        D = md.md_curve(t, lam)[2]
+        assert np.all(D > end.delta)
+
+
+def test_load_pull_off_below_displacement_pull_off():
+    for lam in [0.1, 1.0, 10.0]:
+        assert md.md_pull_off(lam, "load").P <= md.md_pull_off(lam, "displacement").P
+
+
+def test_lambda_from_physical():
+    # Eq 14 by hand for sigma0 = 1 GPa, w = 1 J/m^2, R = 1 um, E* = 100 GPa
+    K = 4 / 3 * 100e9
+    expected = 2 * 1e9 * (1e-6 / (math.pi * 1.0 * K**2)) ** (1 / 3)
+    assert md.md_lambda(1e9, 1.0, 1e-6, 100e9) == pytest.approx(expected, rel=1e-14)
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda: md.md_solve([0.0], -1.0), "lam"),
+    (lambda: md.md_solve([np.nan], 1.0), "delta"),
+    (lambda: md.md_solve([-5.0], 1.0), "delta"),
+    (lambda: md.md_radius([0.0], 1.0), "t"),
+    (lambda: md.md_pull_off(1.0, "force"), "control"),
+    (lambda: md.md_branch_end(np.inf), "lam"),
+])
+def test_bad_input(call, name):
+    with pytest.raises(ValueError, match=name):
+        call()
