@@ -17,8 +17,7 @@ def closed_moment(d, k):
     """int_d^inf (z-d)^k phi(z) dz = Gamma(k+1) exp(-d^2/4) D_{-k-1}(d) / sqrt(2 pi)."""
     with mpmath.workdps(40):
         d = mpmath.mpf(d)
-        val = (mpmath.gamma(k + 1) * mpmath.exp(-d * d / 4) * mpmath.pcfd(-k - 1, d)
-               / mpmath.sqrt(2 * mpmath.pi))
+        val = mpmath.gamma(k + 1) * mpmath.exp(-d * d / 4) * mpmath.pcfd(-k - 1, d) / mpmath.sqrt(2 * mpmath.pi)
         return float(val)
 
 
@@ -246,8 +245,7 @@ def test_md_curve_satisfies_eqs_11_to_13_literally():
         m = math.sqrt(1 + t * t)
         s = math.sqrt(m * m - 1)
         at = math.atan(s)
-        lhs = (lam * A**2 / 2 * (s + (m * m - 2) * at)
-               + 4 * lam**2 * A / 3 * (s * at - m + 1))
+        lhs = lam * A**2 / 2 * (s + (m * m - 2) * at) + 4 * lam**2 * A / 3 * (s * at - m + 1)
         assert abs(lhs - 1) < 1e-13
         assert abs(P - (A**3 - lam * A**2 * (s + m * m * at))) < 1e-13 * max(1, abs(P))
         assert abs(D - (A**2 - 4 / 3 * A * lam * s)) < 1e-13 * max(1, abs(D))

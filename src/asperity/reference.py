@@ -108,8 +108,22 @@ class _Params:
     """Validated model parameters and derived constants (Eqs. 2, 3, 15, 17)."""
 
     __slots__ = (
-        "alpha", "beta", "gamma", "nu", "h_over_b", "tau_f1", "tau_f2", "a1", "a2",
-        "hk_slope", "hertz_pref", "lam", "delta_hat", "P_hat", "A_hat", "key",
+        "alpha",
+        "beta",
+        "gamma",
+        "nu",
+        "h_over_b",
+        "tau_f1",
+        "tau_f2",
+        "a1",
+        "a2",
+        "hk_slope",
+        "hertz_pref",
+        "lam",
+        "delta_hat",
+        "P_hat",
+        "A_hat",
+        "key",
     )
 
     def __init__(self, alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2):
@@ -133,16 +147,24 @@ class _Params:
         # Eq. 6 prefactor.
         self.hertz_pref = (4.0 / 3.0) * (2.0 / (1.0 - self.nu)) * self.alpha * self.beta**2
         if self.gamma > 0.0:
-            f = conversion_factors(self.alpha, self.beta, self.gamma, nu=self.nu,
-                                   h_over_b=self.h_over_b)
+            f = conversion_factors(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b)
             self.lam = f["lambda"]
             self.delta_hat = f["delta_hat"]
             self.P_hat = f["P_hat"]
             self.A_hat = f["A_hat"]
         else:
             self.lam = self.delta_hat = self.P_hat = self.A_hat = None
-        self.key = (self.alpha, self.beta, self.gamma, self.nu, self.h_over_b,
-                    self.tau_f1, self.tau_f2, self.a1, self.a2)
+        self.key = (
+            self.alpha,
+            self.beta,
+            self.gamma,
+            self.nu,
+            self.h_over_b,
+            self.tau_f1,
+            self.tau_f2,
+            self.a1,
+            self.a2,
+        )
 
 
 def conversion_factors(alpha, beta, gamma, *, nu=0.3, h_over_b=1.0):
@@ -192,8 +214,7 @@ def conversion_factors(alpha, beta, gamma, *, nu=0.3, h_over_b=1.0):
         delta_hat = (3 * mpmath.pi * g / (4 * a**2 * b)) ** (mpmath.mpf(2) / 3)
         P_hat = (1 - mpmath.mpf(nu)) * a / (2 * mpmath.pi * b * g)
         A_hat = mpmath.cbrt(4 / (3 * mpmath.pi * g) * (a / b) ** 2)
-        return {"lambda": float(lam), "delta_hat": float(delta_hat),
-                "P_hat": float(P_hat), "A_hat": float(A_hat)}
+        return {"lambda": float(lam), "delta_hat": float(delta_hat), "P_hat": float(P_hat), "A_hat": float(A_hat)}
 
 
 # ---------------------------------------------------------------------------
@@ -257,8 +278,8 @@ def _md_mp(y, lam):
     m2 = 1 + t2
     m = mpmath.sqrt(m2)
     at = mpmath.atan(t)
-    b1 = t + (t2 - 1) * at                 # first bracket of Eq. 11
-    b2 = t * at - t2 / (1 + m)             # second bracket: t atan t - (m - 1)
+    b1 = t + (t2 - 1) * at  # first bracket of Eq. 11
+    b2 = t * at - t2 / (1 + m)  # second bracket: t atan t - (m - 1)
     db1 = 2 * t * at + 2 * t2 / m2
     db2 = at + t / m2 - t / m
     c2 = lam * b1 / 2
@@ -267,11 +288,11 @@ def _md_mp(y, lam):
     dc1 = 4 * lam * lam * db2 / 3
     A = 2 / (c1 + mpmath.sqrt(c1 * c1 + 4 * c2))
     dA = -(dc2 * A * A + dc1 * A) / (2 * c2 * A + c1)
-    cp = t + m2 * at                       # bracket of Eq. 12
+    cp = t + m2 * at  # bracket of Eq. 12
     dcp = 2 + 2 * t * at
-    P = A**3 - lam * A * A * cp            # Eq. 12
+    P = A**3 - lam * A * A * cp  # Eq. 12
     dP = 3 * A * A * dA - lam * (2 * A * dA * cp + A * A * dcp)
-    D = A * A - 4 * A * lam * t / 3        # Eq. 13
+    D = A * A - 4 * A * lam * t / 3  # Eq. 13
     dD = 2 * A * dA - 4 * lam * (dA * t + A) / 3
     return A, P, D, dA, dP, dD
 
@@ -318,14 +339,15 @@ def md_lambda_c():
     float
     """
     with _MP.workdps(40):
+
         def slope(lam):
             x = _end_x(lam)
             xp = (lam * mpmath.pi / 4 + 2 * lam**2 / (3 * x)) / (
-                lam * mpmath.pi * x / 2 + 4 * lam**2 / 3 * (mpmath.pi / 2 - 1))
+                lam * mpmath.pi * x / 2 + 4 * lam**2 / 3 * (mpmath.pi / 2 - 1)
+            )
             return 1 - 4 * lam * xp / 3
 
-        lam_c = mpmath.findroot(slope, (mpmath.mpf("0.9"), mpmath.mpf("0.98")),
-                                solver="anderson")
+        lam_c = mpmath.findroot(slope, (mpmath.mpf("0.9"), mpmath.mpf("0.98")), solver="anderson")
         return float(lam_c)
 
 
@@ -377,12 +399,13 @@ def _branch_end(lam):
     found = False
     while y <= _Y_SCAN_MAX:
         dD = _md_eval(y, lam)[5]
-        if dD >= 0:       # dDelta/dt >= 0  <=>  dDelta/dA <= 0  (dA/dt < 0)
+        if dD >= 0:  # dDelta/dt >= 0  <=>  dDelta/dA <= 0  (dA/dt < 0)
             found = True
             break
         prev = y
         y += _Y_STEP
     if found:
+
         def dDfun(yy):
             with _MP.workdps(_dps_for(yy)):
                 return _md_mp(yy, mpmath.mpf(lam))[5]
@@ -571,7 +594,8 @@ def _md_point_cached(delta, lam):
     if target < D_end:
         raise ValueError(
             f"delta={delta!r} is below the end of the stable Maugis-Dugdale branch "
-            f"(Delta_end={float(D_end)!r} for lambda={lam!r})")
+            f"(Delta_end={float(D_end)!r} for lambda={lam!r})"
+        )
     if target == D_end:
         return float(A_end), float(P_end)
     A, P = _solve_branch(lam, target)
@@ -618,6 +642,7 @@ def _md_pull_off_load(lam):
         dP = _md_eval(ynext, lam)[4]
         # dP/dt < 0 -> > 0 : P has a local minimum in t (in between)
         if prev_dP < 0 <= dP:
+
             def dPfun(yy):
                 with _MP.workdps(_dps_for(yy)):
                     return _md_mp(yy, lm)[4]
@@ -630,7 +655,7 @@ def _md_pull_off_load(lam):
         y = ynext
     with _MP.workdps(40):
         x = _end_x(lm)
-        p_inf = -mpmath.pi * lm * x * x / 2     # limit t -> inf (A_M -> 0)
+        p_inf = -mpmath.pi * lm * x * x / 2  # limit t -> inf (A_M -> 0)
     if best is None or p_inf < best:
         best = p_inf
     return float(best)
@@ -742,7 +767,7 @@ def gw_moment(d, order):
         c = 1 / mpmath.sqrt(2 * mpmath.pi)
 
         def f(u):
-            return u**k * c * mpmath.exp(-(u + dm) ** 2 / 2)
+            return u**k * c * mpmath.exp(-((u + dm) ** 2) / 2)
 
         scale = 1 / (1 + max(d, 0.0))
         pts = [mpmath.mpf(0), scale / 4, scale, 4 * scale]
@@ -802,7 +827,7 @@ def _quantity(name, loc, a, P):
 def _integrate(d, p, names):
     """Integrals of Eqs. 5, 6/18, 10, 21 at separation ``d`` for the given quantities."""
     loc = _Local(p)
-    z0 = d + loc.u_end                    # lowest in-contact height
+    z0 = d + loc.u_end  # lowest in-contact height
     # truncation z_max = max(d, 0) + 12, i.e. u_max = max(-d, 0) + 12: the s grid
     # does not depend on d for d >= 0, so the per-asperity cache is shared.
     s_max = math.sqrt(max(-d, 0.0) + _Z_TAIL - loc.u_end)
@@ -810,8 +835,7 @@ def _integrate(d, p, names):
     s_phi = []
     if z0 < -3.0:
         s_phi = [math.sqrt(zk - z0) for zk in (-6.0, -3.0, 0.0, 3.0, 6.0) if zk - 1.0 > z0]
-    pts = sorted({0.0, s_max,
-                  *[s for s in loc.s_breaks + loc.s_Pzero + s_phi if 0.0 < s < s_max]})
+    pts = sorted({0.0, s_max, *[s for s in loc.s_breaks + loc.s_Pzero + s_phi if 0.0 < s < s_max]})
     if z0 > 0.0:
         # phi(z0 + s^2) = phi(z0) exp(-z0 s^2 - s^4/2): integrate the rest, scale at the end
         scale = math.exp(-0.5 * z0 * z0) / _SQRT2PI
@@ -828,6 +852,7 @@ def _integrate(d, p, names):
 
     out = {}
     for name in names:
+
         def f(s, name=name):
             w = weight(s)
             if w == 0.0:
@@ -837,11 +862,9 @@ def _integrate(d, p, names):
 
         total = 0.0
         for lo, hi in zip(pts[:-1], pts[1:], strict=True):
-            val, err, info, *msg = integrate.quad(
-                f, lo, hi, epsabs=0.0, epsrel=_EPSREL, limit=_LIMIT, full_output=1)
+            val, err, info, *msg = integrate.quad(f, lo, hi, epsabs=0.0, epsrel=_EPSREL, limit=_LIMIT, full_output=1)
             if msg and err > 1e-8 * abs(val) and err > 1e-300:
-                raise ArithmeticError(
-                    f"quadrature of {name!r} at d={d!r} failed: {msg[0]} (err={err:g})")
+                raise ArithmeticError(f"quadrature of {name!r} at d={d!r} failed: {msg[0]} (err={err:g})")
             total += val
         out[name] = float(total * scale)
     return out
@@ -854,8 +877,9 @@ def _params(alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2):
 _NAMES = ("contacts", "P", "F", "area")
 
 
-def separation_point(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0,
-                     tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4):
+def separation_point(
+    d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4
+):
     """Contacts, load, friction and area per asperity at one separation.
 
     Computes, with ``u = z - d`` and the standard normal height density
@@ -899,8 +923,7 @@ def _P_of_d(d, p):
     return _integrate(d, p, ("P",))["P"]
 
 
-def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0,
-               tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4):
+def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4):
     """State at the smallest separation where the mean load per asperity equals ``P``.
 
     ``P_bar(d) -> +inf`` as ``d -> -inf``.  Without adhesion ``P_bar(d)`` is
@@ -959,8 +982,9 @@ def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0,
     return out
 
 
-def pull_off(alpha, beta, gamma, *, d_max=10.0, nu=0.3, h_over_b=1.0,
-             tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4):
+def pull_off(
+    alpha, beta, gamma, *, d_max=10.0, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4
+):
     """Pull-off force per asperity: ``max(0, -min_{d <= d_max} P_bar(d))``.
 
     A grid scan of ``P_bar(d)`` (step 0.25, extended to the left while the
@@ -997,9 +1021,9 @@ def pull_off(alpha, beta, gamma, *, d_max=10.0, nu=0.3, h_over_b=1.0,
         dmin, pmin = grid[i], vals[i]
     else:
         lo, hi = grid[i - 1], grid[i + 1]
-        res = optimize.minimize_scalar(lambda x: _P_of_d(x, p), bounds=(lo, hi),
-                                       method="bounded",
-                                       options={"xatol": 1e-7, "maxiter": 200})
+        res = optimize.minimize_scalar(
+            lambda x: _P_of_d(x, p), bounds=(lo, hi), method="bounded", options={"xatol": 1e-7, "maxiter": 200}
+        )
         dmin, pmin = float(res.x), float(res.fun)
         if vals[i] < pmin:
             dmin, pmin = grid[i], vals[i]

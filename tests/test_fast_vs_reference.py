@@ -1,0 +1,52 @@
+"""The fast path against the independent slow path (asperity.reference) to 1e-8."""
+
+import numpy as np
+import pytest
+
+import asperity
+from asperity import reference
+
+# alpha 1e-3..0.3, beta 1e1..1e6, gamma 0..5e-2, with separations over -3..5.
+CASES = [
+    ((1e-3, 10.0, 0.0), (-3.0, 0.5, 5.0)),
+    ((0.3, 1e6, 0.0), (-1.0, 2.0)),
+    ((0.01, 1000.0, 1e-3), (-3.0, 0.0, 1.0, 2.0, 3.0)),
+    ((0.002, 1000.0, 1e-3), (-1.0, 0.5)),
+    ((0.05, 1e4, 1e-2), (-2.0, 1.5, 4.0)),
+    ((0.3, 10.0, 5e-2), (-3.0, 1.0, 5.0)),
+    ((1e-3, 1e6, 5e-2), (0.0, 2.5)),
+    ((0.01, 100.0, 1e-4), (-0.5, 3.5)),
+    ((0.1, 1e5, 1e-3), (1.0, 5.0)),
+    ((3e-3, 300.0, 3e-2), (-2.5, 2.0)),
+    ((0.02, 50.0, 2e-2), (0.0, 2.0)),  # lambda above lambda_c: interior branch end
+]
+
+
+@pytest.mark.parametrize("params, ds", CASES, ids=[str(c[0]) for c in CASES])
+def test_separation_points(params, ds):
+    fast = asperity.separation_curve(np.array(ds), *params)
+    dry = asperity.separation_curve(np.array(ds), params[0], params[1], 0.0)
+    for i, d in enumerate(ds):
+        ref = reference.separation_point(d, *params)
+        for key in ("contacts", "F", "area"):
+            assert getattr(fast, key)[i] == pytest.approx(ref[key], rel=1e-8), (key, d)
+        # P is a difference of compressive and tensile parts; compare where it is not a
+        # near-cancellation, to its compressive (Hertz) scale.
+        assert fast.P[i] == pytest.approx(ref["P"], rel=1e-8, abs=1e-9 * dry.P[i]), ("P", d)
+
+
+@pytest.mark.parametrize("params", [(0.003, 1000, 1e-3), (0.01, 100, 1e-3)])
+def test_pull_off(params):
+    fast = asperity.pull_off(*params)
+    ref = reference.pull_off(*params)
+    assert fast.force == pytest.approx(ref["pull_off"], rel=1e-8)
+    assert fast.d == pytest.approx(ref["d"], abs=1e-5)
+
+
+@pytest.mark.parametrize("params, P", [((0.01, 1000, 0.0), 10.0), ((0.01, 1000, 1e-3), 3.0)])
+def test_load_point(params, P):
+    fast = asperity.load_curve([P], *params)
+    ref = reference.load_point(P, *params)
+    assert fast.d[0] == pytest.approx(ref["d"], rel=1e-9, abs=1e-9)
+    for key in ("contacts", "F", "area"):
+        assert getattr(fast, key)[0] == pytest.approx(ref[key], rel=1e-8)
