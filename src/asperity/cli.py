@@ -118,7 +118,7 @@ def build_parser() -> argparse.ArgumentParser:
                           description="Quantities at the stable separation for each normal load.")
     _model_args(load)
     load.add_argument("--P", required=True, metavar="LIST",
-                      help="loads P/(N G b^2): 'a,b,c' or 'start:stop:count' (log-spaced)")
+                      help="loads P/(N G b^2): 'a,b,c' or 'start:stop:count' (spaced logarithmically)")
     _output_args(load)
 
     po = sub.add_parser("pulloff", help="pull-off force (Table 1)",
@@ -308,10 +308,26 @@ COMMANDS = {"separation": cmd_separation, "load": cmd_load, "pulloff": cmd_pullo
             "reproduce": cmd_reproduce}
 
 
+_LIST_OPTIONS = ("--d", "--P", "--delta")
+
+
+def _join_negative_lists(argv):
+    """``--d -1,0,2`` -> ``--d=-1,0,2``: argparse would take ``-1,0,2`` for an option."""
+    out = list(argv)
+    i = 0
+    while i < len(out) - 1:
+        nxt = out[i + 1]
+        if out[i] in _LIST_OPTIONS and nxt[:1] == "-" and nxt[1:2] in tuple("0123456789."):
+            out[i:i + 2] = [f"{out[i]}={nxt}"]
+        i += 1
+    return out
+
+
 def main(argv=None) -> int:
     parser = build_parser()
+    argv = sys.argv[1:] if argv is None else argv
     try:
-        args = parser.parse_args(argv)
+        args = parser.parse_args(_join_negative_lists(argv))
         if args.command is None:
             parser.print_help()
             return 2

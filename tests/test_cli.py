@@ -1,0 +1,138 @@
+"""The command line: outputs against the library, formats, and error paths."""
+
+import csv
+import io
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import asperity
+from asperity.cli import main, parse_list
+
+MODEL = ["--alpha", "0.01", "--beta", "1000", "--gamma", "1e-3"]
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def rows_of(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def test_parse_list():
+    np.testing.assert_allclose(parse_list("0,0.5,1", log=False, name="x"), [0, 0.5, 1])
+    np.testing.assert_allclose(parse_list("1:100:3", log=True, name="x"), [1, 10, 100])
+    np.testing.assert_allclose(parse_list("0:1:3", log=False, name="x"), [0, 0.5, 1])
+
+
+def test_load_csv_matches_library(capsys):
+    code, out, _ = run(capsys, "load", *MODEL, "--P", "1:1e4:5", "--format", "csv")
+    assert code == 0
+    rows = rows_of(out)
+    assert list(rows[0]) == ["d", "P", "F", "mu", "area", "pressure", "contacts"]
+    ref = asperity.load_curve(np.geomspace(1, 1e4, 5), 0.01, 1000, 1e-3)
+    for key in ("d", "P", "F", "mu", "area", "pressure", "contacts"):
+        np.testing.assert_allclose([float(r[key]) for r in rows], getattr(ref, key), rtol=1e-15)
+
+
+def test_separation_json_matches_library(capsys):
+    code, out, _ = run(capsys, "separation", *MODEL, "--d", "-1,0,2.5", "--format", "json")
+    assert code == 0
+    rows = json.loads(out)
+    ref = asperity.separation_curve([-1, 0, 2.5], 0.01, 1000, 1e-3)
+    assert [r["d"] for r in rows] == [-1, 0, 2.5]
+    np.testing.assert_allclose([r["F"] for r in rows], ref.F, rtol=1e-15)
+    assert set(rows[0]) == {"d", "P", "F", "mu", "area", "pressure", "contacts"}
+
+
+def test_pulloff_and_table(capsys):
+    code, out, _ = run(capsys, "pulloff", "--alpha", "0.003", "--beta", "1000", "--gamma", "1e-3",
+                       "--format", "json")
+    assert code == 0
+    got = json.loads(out)
+    ref = asperity.pull_off(0.003, 1000, 1e-3)
+    assert got["pull_off"] == pytest.approx(ref.force, rel=1e-15) and set(got) == {"pull_off", "d"}
+    code, out, _ = run(capsys, "pulloff", "--alpha", "0.003", "--beta", "1000", "--gamma", "1e-3",
+                       "--format", "table")
+    assert "pull_off" in out.splitlines()[0]
+
+
+def test_md_commands(capsys):
+    code, out, _ = run(capsys, "md", "--lam", "1", "--delta", "-0.5,0,1", "--format", "csv")
+    assert code == 0
+    rows = rows_of(out)
+    A, P, t = asperity.md_solve(np.array([-0.5, 0, 1]), 1.0)
+    np.testing.assert_allclose([float(r["A"]) for r in rows], A, rtol=1e-15)
+    np.testing.assert_allclose([float(r["m"]) for r in rows], np.sqrt(1 + t**2), rtol=1e-15)
+    code, out, _ = run(capsys, "md", "--lam", "1e4", "--pulloff", "--format", "csv")
+    rows = {r["control"]: float(r["P"]) for r in rows_of(out)}
+    assert rows["load"] == pytest.approx(-1.5, rel=1e-3)
+    assert rows["displacement"] == pytest.approx(-5 / 6, rel=1e-3)
+
+
+def test_output_file_and_plot(capsys, tmp_path):
+    out_csv, png = tmp_path / "c.csv", tmp_path / "c.png"
+    code, out, _ = run(capsys, "load", *MODEL, "--P", "1:1e3:20", "-o", str(out_csv),
+                       "--plot", str(png))
+    assert code == 0 and out == ""
+    assert len(rows_of(out_csv.read_text())) == 20
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    code, _, _ = run(capsys, "separation", *MODEL, "--d", "0:4:9", "--plot", str(png))
+    assert code == 0
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["load", "--alpha", "-1", "--beta", "10", "--P", "1"], "alpha"),
+    (["load", "--alpha", "0.01", "--beta", "10", "--P", "0,1"], "P"),
+    (["load", "--alpha", "0.01", "--beta", "10", "--P", "a,b"], "--P"),
+    (["load", "--alpha", "0.01", "--beta", "10", "--P", "0:1:5"], "--P"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--d", "0,nan"], "--d"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--nu", "0.7", "--d", "0"], "nu"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--d", "0", "--bogus"], "bogus"),
+    (["pulloff", "--alpha", "0.01", "--beta", "10"], "gamma"),
+    (["md", "--lam", "-1", "--pulloff"], "lam"),
+    (["md", "--lam", "1", "--delta", "-5"], "delta"),
+    (["separation", "--alpha", "x", "--beta", "10", "--d", "0"], "alpha"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--d", "0", "-o", "/nonexistent/dir/f"],
+     "cannot write"),
+    (["nosuchcommand"], "nosuchcommand"),
+])
+def test_errors_one_line_status_2(capsys, argv, needle):
+    code, out, err = run(capsys, *argv)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("asperity: error:") and needle in lines[0]
+    assert "Traceback" not in err
+
+
+def test_help_explains_every_parameter(capsys):
+    for cmd in ("separation", "load", "pulloff", "md", "reproduce"):
+        with pytest.raises(SystemExit) as exc:
+            main([cmd, "--help"])
+        assert exc.value.code == 0
+        out = " ".join(capsys.readouterr().out.split())
+        for word in {"separation": ["--alpha", "--beta", "--gamma", "--nu", "--h-over-b",
+                                    "linearly", "N G b^2"],
+                     "load": ["logarithmically", "--plot", "contacts"],
+                     "pulloff": ["--d-max"], "md": ["--lam", "--delta", "--pulloff"],
+                     "reproduce": ["--out"]}[cmd]:
+            assert word in out, (cmd, word)
+
+
+def test_subprocess_entry_point(tmp_path):
+    version = subprocess.run([sys.executable, "-m", "asperity.cli", "--version"],
+                             capture_output=True, text=True, check=True)
+    assert version.stdout.strip() == f"asperity {asperity.__version__}"
+    res = subprocess.run([sys.executable, "-m", "asperity.cli", "load", *MODEL, "--P", "10"],
+                         capture_output=True, text=True, check=True)
+    row = rows_of(res.stdout)[0]  # not a terminal: CSV by default
+    assert float(row["P"]) == 10.0
+    bad = subprocess.run([sys.executable, "-m", "asperity.cli", "load", "--alpha", "0",
+                          "--beta", "1", "--P", "1"], capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "Traceback" not in bad.stderr
