@@ -13,6 +13,7 @@ __all__ = [
     "check_nonnegative",
     "check_poisson",
     "check_positive",
+    "check_radius",
     "check_range",
     "scalar",
 ]
@@ -61,6 +62,14 @@ def check_poisson(nu) -> np.ndarray:
     arr = as_float_array(nu, "nu")
     if np.any((arr <= -1.0) | (arr >= 0.5)):
         raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 0.5), got {nu!r}")
+    return arr
+
+
+def check_radius(A, name: str = "A") -> np.ndarray:
+    """A contact radius (array, may be empty): finite and >= 0."""
+    arr = as_float_array(A, name, allow_empty=True)
+    if np.any(arr < 0):
+        raise ValueError(f"{name} (contact radius) must be >= 0")
     return arr
 
 

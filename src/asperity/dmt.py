@@ -16,21 +16,13 @@ References
 
 from __future__ import annotations
 
-import numpy as np
-
-from ._validation import as_float_array
+from ._validation import check_radius as _radius
 
 __all__ = ["dmt_load", "dmt_penetration", "DMT_PULL_OFF"]
 
 #: DMT pull-off load P/(pi w R).
 DMT_PULL_OFF = -2.0
 
-
-def _radius(A):
-    A = as_float_array(A, "A", allow_empty=True)
-    if np.any(A < 0):
-        raise ValueError("A (contact radius) must be >= 0")
-    return A
 
 
 def dmt_load(A):

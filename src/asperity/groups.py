@@ -49,6 +49,12 @@ __all__ = [
 ]
 
 
+def _groups(alpha, beta, gamma):
+    """alpha, beta, gamma as validated float arrays (all > 0: these scales need adhesion)."""
+    return (check_positive(alpha, "alpha"), check_positive(beta, "beta"),
+            check_positive(gamma, "gamma"))
+
+
 def roughness_alpha(sigma, R):
     r"""Surface roughness parameter :math:`\alpha = (\sigma/R)^{1/2}` (Eq 7).
 
@@ -127,9 +133,7 @@ def maugis_lambda(alpha, beta, gamma, h_over_b=1.0):
     ----------
     Adams et al., Eq (15).
     """
-    alpha = check_positive(alpha, "alpha")
-    beta = check_positive(beta, "beta")
-    gamma = check_positive(gamma, "gamma")
+    alpha, beta, gamma = _groups(alpha, beta, gamma)
     h_over_b = check_positive(h_over_b, "h_over_b")
     return np.cbrt(9.0 * beta * gamma**2 / (2.0 * np.pi * alpha)) / h_over_b
 
@@ -141,9 +145,7 @@ def penetration_scale(alpha, beta, gamma):
     ----------
     Adams et al., Eq (17).
     """
-    alpha = check_positive(alpha, "alpha")
-    beta = check_positive(beta, "beta")
-    gamma = check_positive(gamma, "gamma")
+    alpha, beta, gamma = _groups(alpha, beta, gamma)
     return np.cbrt(3.0 * np.pi * gamma / (4.0 * alpha**2 * beta)) ** 2
 
 
@@ -165,9 +167,7 @@ def load_scale(alpha, beta, gamma, nu=0.3, form: str = "derived"):
     ----------
     Adams et al., Eq (17); see ``docs/decisions.md``.
     """
-    alpha = check_positive(alpha, "alpha")
-    beta = check_positive(beta, "beta")
-    gamma = check_positive(gamma, "gamma")
+    alpha, beta, gamma = _groups(alpha, beta, gamma)
     nu = check_poisson(nu)
     if form == "derived":
         return (1.0 - nu) * alpha / (2.0 * np.pi * beta * gamma)
@@ -183,9 +183,7 @@ def radius_scale(alpha, beta, gamma):
     ----------
     Adams et al., Eq (17).
     """
-    alpha = check_positive(alpha, "alpha")
-    beta = check_positive(beta, "beta")
-    gamma = check_positive(gamma, "gamma")
+    alpha, beta, gamma = _groups(alpha, beta, gamma)
     return np.cbrt(4.0 * (alpha / beta) ** 2 / (3.0 * np.pi * gamma))
 
 

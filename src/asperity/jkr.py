@@ -19,16 +19,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array
+from ._validation import check_radius as _radius
 
 __all__ = ["jkr_load", "jkr_penetration", "jkr_pull_off"]
 
-
-def _radius(A):
-    A = as_float_array(A, "A", allow_empty=True)
-    if np.any(A < 0):
-        raise ValueError("A (contact radius) must be >= 0")
-    return A
 
 
 def jkr_load(A):
