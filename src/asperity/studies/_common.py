@@ -1,0 +1,289 @@
+"""Shared pieces of the paper's studies: curves with labels, checks, CSV rows, plot style.
+
+Nothing here imports matplotlib at module level; :func:`new_figure` imports it when a
+figure is drawn.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import NamedTuple
+
+import numpy as np
+
+from ..curves import COLUMNS, CurveResult, Model
+
+#: Poisson's ratio and Dugdale range used for every study (the paper states h = b only).
+NU = 0.3
+H_OVER_B = 1.0
+
+#: Figure size (inches) and resolution of the PNGs.
+FIGSIZE = (6.0, 4.5)
+DPI = 150
+
+#: Axes position in the figure (fractions), room for tick labels and axis labels.
+MARGINS = {"left": 0.13, "right": 0.97, "bottom": 0.115, "top": 0.975}
+
+#: Colours of successive curves in one figure (colour-blind safe, prints in grey).
+COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
+
+
+@lru_cache(maxsize=64)
+def model(alpha: float, beta: float, gamma: float = 0.0) -> Model:
+    """The :class:`~asperity.Model` for one parameter set, shared by all studies.
+
+    A Model caches its tabulated asperity law, so Figs 4-6 (which share the paper's
+    default case) and Figs 7-9 (which share their cases) pay the set-up once.
+    """
+    return Model(alpha, beta, gamma, nu=NU, h_over_b=H_OVER_B)
+
+
+@dataclass(frozen=True)
+class Series:
+    """One plotted curve: its parameters, a legend label and the model's output."""
+
+    key: str  #: plain-text curve id, the ``curve`` column of the CSV
+    label: str  #: legend label (matplotlib mathtext)
+    alpha: float
+    beta: float
+    gamma: float
+    curve: CurveResult
+    adhesion: bool = True  #: False for the gamma = 0 baselines
+
+    def column(self, name: str) -> np.ndarray:
+        """A column of the curve, or a derived one: ``P_over_alpha``, ``alpha_mu``, ``abs_P``."""
+        if name == "abs_P":
+            return np.abs(self.curve.P)
+        if name == "P_over_alpha":
+            return self.curve.P / self.alpha
+        if name == "alpha_mu":
+            return self.alpha * self.curve.mu
+        return np.asarray(getattr(self.curve, name))
+
+
+class Check(NamedTuple):
+    """A claim of the paper, whether our curves show it, and the numbers behind that."""
+
+    claim: str
+    passed: bool
+    detail: str
+
+
+@dataclass(frozen=True)
+class FigureData:
+    """Everything one figure shows: its curves and how they were chosen."""
+
+    number: int
+    title: str
+    x: str  #: column plotted on x (see :meth:`Series.column`)
+    y: str  #: column plotted on y
+    series: tuple[Series, ...]
+    caption: str
+    parameters: str  #: what we chose and why (the paper does not state it)
+    extra: dict = field(default_factory=dict)  #: figure-specific values (e.g. pull-offs)
+
+    def find(self, key: str) -> Series:
+        for s in self.series:
+            if s.key == key:
+                return s
+        raise KeyError(key)
+
+
+def key_of(alpha: float, beta: float, gamma: float) -> str:
+    """Plain-text curve id, e.g. ``alpha=0.01 beta=1000 gamma=0.001``."""
+    return f"alpha={alpha:g} beta={beta:g} gamma={gamma:g}"
+
+
+def number_text(x: float, sci: bool = False) -> str:
+    """Plain-text (Unicode) parameter value for legends: 1000 -> 10\u00b3, 0.005 -> 0.005.
+
+    Exact powers of ten with ``|exponent| >= 2`` become ``10`` with a superscript (0.01
+    stays 0.01 unless ``sci``); with ``sci`` other values become ``3\u00d710\u207b\u00b3``.
+    Legends are plain text because mathtext costs ~25 ms a label per output format.
+    """
+    if x == 0:
+        return "0"
+    e = math.floor(math.log10(abs(x)) + 1e-12)
+    m = x / 10.0**e
+    power = "10" + str(e).translate(_SUPERSCRIPT)
+    if math.isclose(m, 1.0, rel_tol=1e-9) and (abs(e) >= 3 or e == 2 or (sci and e != 0)):
+        return power
+    if sci and e != 0:
+        return f"{m:g}\u00d7{power}"
+    return f"{x:g}"
+
+
+def params_text(**values) -> str:
+    """Legend text such as ``\u03b1 = 0.01, \u03b2 = 10\u00b3`` (gamma in scientific form)."""
+    greek = {"alpha": "\u03b1", "beta": "\u03b2", "gamma": "\u03b3"}
+    return ", ".join(f"{greek[k]} = {number_text(v, sci=k == 'gamma')}" for k, v in values.items())
+
+
+def load_series(alpha, beta, gamma, loads, *, label: str, adhesion: bool | None = None) -> Series:
+    """A load curve (Figs 3-6, 9) from the shared :func:`model`."""
+    curve = model(alpha, beta, gamma).load_curve(loads)
+    return Series(key_of(alpha, beta, gamma), label, float(alpha), float(beta), float(gamma), curve,
+                  adhesion=gamma > 0 if adhesion is None else adhesion)
+
+
+def separation_series(alpha, beta, gamma, d, *, label: str) -> Series:
+    """A separation curve (Figs 7-8) from the shared :func:`model`."""
+    curve = model(alpha, beta, gamma).separation_curve(d)
+    return Series(key_of(alpha, beta, gamma), label, float(alpha), float(beta), float(gamma), curve,
+                  adhesion=gamma > 0)
+
+
+# -- CSV ---------------------------------------------------------------------------------
+#: Columns of every figure CSV, in order (long format: one row per plotted point).
+CSV_COLUMNS = ("curve", "adhesion", "alpha", "beta", "gamma", "nu", "h_over_b", *COLUMNS,
+               "P_over_alpha", "alpha_mu", "x", "y")
+
+
+def csv_rows(data: FigureData) -> list[dict]:
+    """Long-format rows of a figure: curve id, parameters, every column, and x, y plotted."""
+    rows = []
+    for s in data.series:
+        cols = {name: s.column(name) for name in (*COLUMNS, "P_over_alpha", "alpha_mu")}
+        x, y = s.column(data.x), s.column(data.y)
+        for i in range(len(s.curve)):
+            row = {"curve": s.key, "adhesion": s.adhesion, "alpha": s.alpha, "beta": s.beta,
+                   "gamma": s.gamma, "nu": NU, "h_over_b": H_OVER_B}
+            row.update({name: float(v[i]) for name, v in cols.items()})
+            row["x"], row["y"] = float(x[i]), float(y[i])
+            rows.append(row)
+    return rows
+
+
+def write_csv(path, rows: Sequence[dict], columns: Sequence[str]) -> None:
+    """Write ``rows`` (dicts) with a header; floats at full precision (repr)."""
+    with open(path, "w", encoding="utf-8", newline="") as fh:
+        writer = csv.writer(fh, lineterminator="\n")
+        writer.writerow(columns)
+        for row in rows:
+            writer.writerow([repr(v) if isinstance(v, float) else v for v in (row[c] for c in columns)])
+
+
+# -- plotting ----------------------------------------------------------------------------
+RC = {
+    "font.size": 10,
+    "axes.labelsize": 11,
+    "legend.fontsize": 8.5,
+    "xtick.labelsize": 9.5,
+    "ytick.labelsize": 9.5,
+    "xtick.direction": "in",
+    "ytick.direction": "in",
+    "xtick.top": True,
+    "ytick.right": True,
+    "lines.linewidth": 1.5,
+    "legend.frameon": False,
+    "svg.fonttype": "path",
+    "svg.hashsalt": "asperity",
+}
+
+
+def new_figure():
+    """A (Figure, Axes) pair on the Agg canvas, paper size; never touches pyplot."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=FIGSIZE, dpi=DPI)
+    FigureCanvasAgg(fig)
+    # Fixed margins: every figure has the same kind of labels, and a layout engine would
+    # double the time to save each figure.
+    fig.subplots_adjust(**MARGINS)
+    ax = fig.add_subplot()
+    return fig, ax
+
+
+def drawing(draw: Callable) -> Callable:
+    """Decorator: run a drawing function inside the studies' matplotlib rc settings.
+
+    The figure's log axes get plain-text tick labels (see :func:`log_ticks`).
+    """
+
+    def wrapper(data: FigureData):
+        import matplotlib as mpl
+
+        with mpl.rc_context(RC):
+            fig = draw(data)
+            for ax in fig.axes:
+                log_ticks(ax)
+        return fig
+
+    wrapper.__name__ = draw.__name__
+    wrapper.__qualname__ = draw.__qualname__
+    wrapper.__doc__ = draw.__doc__
+    return wrapper
+
+
+def save_figure(fig, *paths) -> None:
+    """Save ``fig`` to each path (format from the suffix) under the studies' rc settings.
+
+    PNGs at :data:`DPI`; no timestamps or software versions in the files, so a rerun with
+    the same library gives the same bytes.
+    """
+    import matplotlib as mpl
+
+    with mpl.rc_context(RC):
+        for path in paths:
+            fmt = str(path).rsplit(".", 1)[-1].lower()
+            metadata = {"Date": None} if fmt == "svg" else {"Software": None} if fmt == "png" else None
+            fig.savefig(path, dpi=DPI, metadata=metadata)
+
+
+_SUPERSCRIPT = str.maketrans("-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079")
+
+
+def _power_of_ten(x, _pos=None) -> str:
+    """Tick label ``10`` with a Unicode superscript exponent (mathtext would cost ~10 ms a label)."""
+    if not x > 0:
+        return ""
+    e = round(math.log10(x))
+    if not math.isclose(x, 10.0**e, rel_tol=1e-9):
+        return ""
+    return "10" + str(e).translate(_SUPERSCRIPT)
+
+
+def _plain_number(x, _pos=None) -> str:
+    """Tick label as a plain decimal (for log axes spanning few decades)."""
+    return f"{x:g}" if x > 0 else ""
+
+
+def log_ticks(ax) -> None:
+    """Plain-text tick labels on each log axis of ``ax``.
+
+    Powers of ten when the axis spans three decades or more; otherwise 1, 2 and 5 times
+    powers of ten, as decimals, so that a short axis has more than one label.
+    """
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    for axis, lim in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+        if axis.get_scale() != "log":
+            continue
+        if math.log10(max(lim) / min(lim)) < 3.0:
+            axis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+            axis.set_major_formatter(FuncFormatter(_plain_number))
+        else:
+            axis.set_major_formatter(FuncFormatter(_power_of_ten))
+            if math.log10(max(lim) / min(lim)) > 6.0:
+                # 2..9 on every decade would crowd a long axis (and each tick costs ~2 ms).
+                axis.set_minor_locator(LogLocator(subs=(2.0, 5.0), numticks=100))
+        axis.set_minor_formatter(NullFormatter())
+
+
+def log_decades_limits(values, pad: float = 0.15) -> tuple[float, float]:
+    """Log-axis limits around the positive finite numbers in ``values`` (a list of arrays),
+    padded by ``pad`` decades."""
+    v = np.concatenate([np.ravel(np.asarray(x, dtype=float)) for x in values])
+    v = v[np.isfinite(v) & (v > 0)]
+    lo, hi = np.log10(v.min()), np.log10(v.max())
+    return 10 ** (lo - pad), 10 ** (hi + pad)
+
+
+def ratio_text(values) -> str:
+    """Compact text of a sequence of numbers for check details."""
+    return ", ".join(f"{v:.3g}" for v in values)
