@@ -136,3 +136,20 @@ def test_subprocess_entry_point(tmp_path):
     bad = subprocess.run([sys.executable, "-m", "asperity.cli", "load", "--alpha", "0",
                           "--beta", "1", "--P", "1"], capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "Traceback" not in bad.stderr
+
+
+def test_reproduce_command(tmp_path):
+    # The README's main job, through the installed entry point's module.
+    out = tmp_path / "paper"
+    res = subprocess.run([sys.executable, "-m", "asperity.cli", "reproduce", "--out", str(out)],
+                         capture_output=True, text=True, check=True)
+    lines = res.stdout.splitlines()
+    assert sum(line.startswith("Fig ") for line in lines) == 7 and "index.html" in lines[-1]
+    assert (out / "index.html").exists() and (out / "table1.csv").exists()
+
+
+def test_reproduce_unwritable(capsys, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    code, _, err = run(capsys, "reproduce", "--out", str(blocker / "sub"))
+    assert code == 2 and err.count("\n") == 1 and "cannot write" in err
