@@ -153,3 +153,58 @@ def test_reproduce_unwritable(capsys, tmp_path):
     blocker.write_text("x")
     code, _, err = run(capsys, "reproduce", "--out", str(blocker / "sub"))
     assert code == 2 and err.count("\n") == 1 and "cannot write" in err
+
+
+AU = ["--material", "Au", "--sigma", "2nm", "--radius", "1um", "--density", "1e12/m^2", "--area", "1mm^2"]
+
+
+def test_physical_load_matches_library(capsys):
+    from asperity.physical import PhysicalContact, Surface
+
+    code, out, _ = run(capsys, "load", *AU, "--load", "1mN:1N:4", "--format", "csv")
+    assert code == 0
+    rows = rows_of(out)
+    assert list(rows[0]) == ["d_m", "P_N", "F_N", "mu", "area_m2", "pressure_Pa", "contacts"]
+    ref = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6)).load_curve(np.geomspace(1e-3, 1, 4))
+    np.testing.assert_allclose([float(r["P_N"]) for r in rows], ref.P, rtol=1e-14)
+    np.testing.assert_allclose([float(r["F_N"]) for r in rows], ref.F, rtol=1e-14)
+    np.testing.assert_allclose([float(r["d_m"]) for r in rows], ref.d, rtol=1e-14)
+
+
+def test_physical_separation_and_pulloff(capsys):
+    from asperity.physical import PhysicalContact, Surface
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False)
+    code, out, _ = run(capsys, "separation", *AU, "--no-adhesion", "--separation", "-2nm,0nm,3nm",
+                       "--format", "json")
+    assert code == 0
+    got = json.loads(out)
+    np.testing.assert_allclose([r["P_N"] for r in got], contact.separation_curve([-2e-9, 0, 3e-9]).P,
+                               rtol=1e-14)
+    code, out, _ = run(capsys, "pulloff", *AU, "--format", "json")
+    got = json.loads(out)
+    ref = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6)).pull_off()
+    assert set(got) == {"pull_off_N", "d_m"} and got["pull_off_N"] == pytest.approx(ref.force, rel=1e-14)
+
+
+def test_materials_listing(capsys):
+    code, out, _ = run(capsys, "materials", "--format", "csv", "--sources")
+    rows = rows_of(out)
+    assert code == 0 and {"Au", "Si", "diamond", "Au/mica"} <= {r["name"] for r in rows}
+    assert all(r["sources"] for r in rows if r["E_Pa"])
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["load", *AU, "--load", "1"], "--load"),                  # missing unit
+    (["load", *AU, "--load", "1m"], "--load"),                 # wrong dimension
+    (["load", *AU[:2], "--load", "1mN"], "--sigma"),           # incomplete surface
+    (["load", *AU, "--P", "1"], "--load"),                     # dimensionless list with material
+    (["load", *AU, "--alpha", "0.1", "--load", "1mN"], "not both"),
+    (["load", "--material", "Unobtainium", *AU[2:], "--load", "1mN"], "Unobtainium"),
+    (["separation", *AU[:2], "--sigma", "-2nm", *AU[4:], "--separation", "0nm"], "sigma"),
+    (["load", "--beta", "10", "--P", "1"], "--alpha"),
+    (["pulloff", "--alpha", "0.01", "--beta", "10"], "--gamma"),
+])
+def test_physical_errors(capsys, argv, needle):
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("\n") == 1 and needle in err, err

@@ -18,10 +18,13 @@ import numpy as np
 from ._version import __version__
 from .curves import COLUMNS, Model
 from .maugis_dugdale import md_branch_end, md_pull_off, md_solve
+from .physical import PHYSICAL_COLUMNS
 
 __all__ = ["main"]
 
-UNITS = "\n".join(f"  {name:9s} {meaning}" for name, meaning in COLUMNS.items())
+UNITS = ("\n".join(f"  {name:9s} {meaning}" for name, meaning in COLUMNS.items())
+         + "\nWith --material (SI):\n"
+         + "\n".join(f"  {col:11s} [{unit}] {meaning}" for col, unit, meaning in PHYSICAL_COLUMNS.values()))
 
 MODEL_HELP = {
     "alpha": "surface roughness parameter (sigma/R)^(1/2) > 0 (Eq 7)",
@@ -68,13 +71,23 @@ def parse_list(text: str, *, log: bool, name: str) -> np.ndarray:
     return values
 
 
-def _model_args(p: argparse.ArgumentParser, gamma_required: bool = False):
-    g = p.add_argument_group("model parameters (dimensionless)")
-    g.add_argument("--alpha", type=float, required=True, help=MODEL_HELP["alpha"])
-    g.add_argument("--beta", type=float, required=True, help=MODEL_HELP["beta"])
-    g.add_argument("--gamma", type=float, required=gamma_required, default=0.0, help=MODEL_HELP["gamma"])
-    g.add_argument("--nu", type=float, default=0.3, help=MODEL_HELP["nu"])
+def _model_args(p: argparse.ArgumentParser):
+    g = p.add_argument_group("model parameters (dimensionless), or a physical contact below")
+    g.add_argument("--alpha", type=float, help=MODEL_HELP["alpha"])
+    g.add_argument("--beta", type=float, help=MODEL_HELP["beta"])
+    g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"] + " (default 0)")
+    g.add_argument("--nu", type=float, default=None, help=MODEL_HELP["nu"])
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=1.0, help=MODEL_HELP["h_over_b"])
+    ph = p.add_argument_group(
+        "physical contact (SI results; quantities with units, e.g. 2nm, 1um, 1e12/m^2, 1mm^2)")
+    ph.add_argument("--material", help="material name from the table (asperity materials lists them), "
+                                       "e.g. Au, Si, Au/Au")
+    ph.add_argument("--sigma", help="standard deviation of summit heights sigma_s, a length (e.g. 2nm)")
+    ph.add_argument("--radius", help="mean summit radius R, a length (e.g. 1um)")
+    ph.add_argument("--density", help="summit density eta, per area (e.g. 1e12/m^2)")
+    ph.add_argument("--area", help="nominal contact area, an area (e.g. 1mm^2)")
+    ph.add_argument("--no-adhesion", action="store_true",
+                    help="ignore the material's work of adhesion (Hertz contacts, gamma = 0)")
 
 
 def _output_args(p: argparse.ArgumentParser, plot: bool = True):
@@ -109,25 +122,36 @@ def build_parser() -> argparse.ArgumentParser:
                          description="Normal and friction force, mu, area, pressure and contacts "
                                      "at given separations.")
     _model_args(sep)
-    sep.add_argument("--d", required=True, metavar="LIST",
+    sep.add_argument("--d", metavar="LIST",
                      help="separations d/sigma: 'a,b,c' or 'start:stop:count' (linearly spaced)")
+    sep.add_argument("--separation", metavar="LIST",
+                     help="physical separations with a length unit, e.g. 0nm:10nm:21 (with --material)")
     _output_args(sep)
 
     load = sub.add_parser("load", help="quantities versus normal load (Figs 3-6, 9)",
                           formatter_class=fmt, epilog=f"Columns:\n{UNITS}",
                           description="Quantities at the stable separation for each normal load.")
     _model_args(load)
-    load.add_argument("--P", required=True, metavar="LIST",
+    load.add_argument("--P", metavar="LIST",
                       help="loads P/(N G b^2): 'a,b,c' or 'start:stop:count' (spaced logarithmically)")
+    load.add_argument("--load", metavar="LIST",
+                      help="physical loads with a force unit, e.g. 1mN:1N:50 (spaced logarithmically; "
+                           "with --material)")
     _output_args(load)
 
     po = sub.add_parser("pulloff", help="pull-off force (Table 1)",
                         description="Largest tensile force |P|/(N G b^2) over separations up to "
                                     "d_max, and where it occurs.")
-    _model_args(po, gamma_required=True)
+    _model_args(po)
     po.add_argument("--d-max", dest="d_max", type=float, default=10.0,
                     help="largest separation d/sigma searched (default 10)")
     _output_args(po, plot=False)
+
+    mat = sub.add_parser("materials", help="list the materials table (SI units, with sources)",
+                         description="The shipped materials table: E [Pa], nu, Burgers vector b [m], "
+                                     "work of adhesion w [J/m^2]; empty = missing, with sources.")
+    mat.add_argument("--sources", action="store_true", help="include the source of every number")
+    _output_args(mat, plot=False)
 
     md = sub.add_parser("md", help="one Maugis-Dugdale asperity",
                         description="One Maugis-Dugdale sphere in Maugis' units: radius A, load "
@@ -187,11 +211,11 @@ def _fmt(args) -> str:
 
 
 def _curve_rows(curve) -> list[dict]:
-    cols = curve.columns()
+    cols = curve.columns()  # dimensionless names, or physical names with units (P_N, d_m, ...)
     return [{k: float(v[i]) for k, v in cols.items()} for i in range(len(curve))]
 
 
-def _plot(curve, path: str, x: str, title: str):
+def _plot(curve, path: str, x: str, title: str, physical: bool = False):
     try:
         import matplotlib
 
@@ -202,23 +226,25 @@ def _plot(curve, path: str, x: str, title: str):
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.6), layout="constrained")
     xs = getattr(curve, x)
     if x == "P":
+        xlabel = r"$P$ (N)" if physical else r"$\bar P = P/NGb^2$"
         ax1.loglog(xs, curve.mu, "k-")
-        ax1.set_xlabel(r"$\bar P = P/NGb^2$")
+        ax1.set_xlabel(xlabel)
         ax1.set_ylabel(r"$\mu$")
         ax2.loglog(xs, curve.area, "k-")
-        ax2.set_xlabel(r"$\bar P = P/NGb^2$")
-        ax2.set_ylabel(r"$A/N\pi b^2$")
+        ax2.set_xlabel(xlabel)
+        ax2.set_ylabel(r"real contact area $A$ (m$^2$)" if physical else r"$A/N\pi b^2$")
     else:
         pos = curve.P > 0
         ax1.semilogy(xs[pos], curve.P[pos], "k-", label="compressive $P$")
         if np.any(~pos):
             ax1.semilogy(xs[~pos], -curve.P[~pos], "r--", label="tensile $-P$")
         ax1.legend()
-        ax1.set_xlabel(r"$d/\sigma$")
-        ax1.set_ylabel(r"$|P|/NGb^2$")
+        xlabel = r"separation $d$ (m)" if physical else r"$d/\sigma$"
+        ax1.set_xlabel(xlabel)
+        ax1.set_ylabel(r"$|P|$ (N)" if physical else r"$|P|/NGb^2$")
         ax2.semilogy(xs, curve.F, "k-")
-        ax2.set_xlabel(r"$d/\sigma$")
-        ax2.set_ylabel(r"$F/NGb^2$")
+        ax2.set_xlabel(xlabel)
+        ax2.set_ylabel(r"$F$ (N)" if physical else r"$F/NGb^2$")
     fig.suptitle(title)
     try:
         fig.savefig(path, dpi=150)
@@ -229,37 +255,107 @@ def _plot(curve, path: str, x: str, title: str):
 
 
 # -- commands ------------------------------------------------------------------------------
+def _is_physical(args) -> bool:
+    physical = [args.material, args.sigma, args.radius, args.density, args.area]
+    if any(v is not None for v in physical):
+        if args.alpha is not None or args.beta is not None or args.gamma is not None:
+            raise UsageError("give either --alpha/--beta/--gamma or a physical contact "
+                             "(--material, --sigma, --radius, --density, --area), not both")
+        missing = [f"--{n}" for n, v in zip(("material", "sigma", "radius", "density", "area"),
+                                             physical, strict=True) if v is None]
+        if missing:
+            raise UsageError(f"a physical contact also needs {', '.join(missing)}")
+        if args.nu is not None:
+            raise UsageError("--nu comes from the material with --material")
+        return True
+    if args.alpha is None or args.beta is None:
+        raise UsageError("the model needs --alpha and --beta (or --material with --sigma, --radius, "
+                         "--density and --area)")
+    return False
+
+
 def _model(args) -> Model:
-    return Model(args.alpha, args.beta, args.gamma, nu=args.nu, h_over_b=args.h_over_b)
+    nu = 0.3 if args.nu is None else args.nu
+    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b)
+
+
+def _contact(args):
+    from .physical import PhysicalContact, Surface
+    from .units import parse_quantity
+
+    surface = Surface(parse_quantity(args.sigma, "m", "--sigma"), parse_quantity(args.radius, "m", "--radius"),
+                      parse_quantity(args.density, "1/m^2", "--density"),
+                      parse_quantity(args.area, "m^2", "--area"))
+    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion)
+
+
+def _quantity_list(text: str, unit: str, *, log: bool, name: str) -> np.ndarray:
+    """``a,b,c`` or ``start:stop:count`` of quantities with units, in ``unit``."""
+    from .units import parse_quantity
+
+    if ":" in text:
+        parts = text.split(":")
+        if len(parts) != 3:
+            raise UsageError(f"{name}: expected 'start:stop:count', got {text!r}")
+        start, stop = (parse_quantity(x, unit, name) for x in parts[:2])
+        return parse_list(f"{start!r}:{stop!r}:{parts[2]}", log=log, name=name)
+    return np.array([parse_quantity(x, unit, name) for x in text.split(",") if x.strip()])
 
 
 def _title(args) -> str:
-    return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma:g}, nu={args.nu:g}, "
-            f"h/b={args.h_over_b:g}")
+    if args.material:
+        return (f"{args.material}: sigma_s={args.sigma}, R={args.radius}, eta={args.density}, "
+                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}")
+    return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma or 0:g}, "
+            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}")
+
+
+def _run_curve(args, kind: str):
+    """separation or load: dimensionless or physical, then output and plot."""
+    physical = _is_physical(args)
+    if kind == "separation":
+        dimless, phys, unit, log = args.d, args.separation, "m", False
+        names = ("--d", "--separation")
+    else:
+        dimless, phys, unit, log = args.P, args.load, "N", True
+        names = ("--P", "--load")
+    text = phys if physical else dimless
+    if text is None or (phys if not physical else dimless) is not None:
+        want, other = (names[1], names[0]) if physical else names
+        raise UsageError(f"give {want} LIST" + (f" (not {other}) with --material" if physical
+                                               else f" (or --material ... with {names[1]})"))
+    if physical:
+        values = _quantity_list(text, unit, log=log, name=names[1])
+        contact = _contact(args)
+        curve = getattr(contact, f"{kind}_curve")(values)
+    else:
+        values = parse_list(text, log=log, name=names[0])
+        curve = getattr(_model(args), f"{kind}_curve")(values)
+    _emit(_format_rows(_curve_rows(curve), _fmt(args)), args)
+    if args.plot:
+        _plot(curve, args.plot, "d" if kind == "separation" else "P", _title(args), physical)
 
 
 def cmd_separation(args):
-    d = parse_list(args.d, log=False, name="--d")
-    curve = _model(args).separation_curve(d)
-    _emit(_format_rows(_curve_rows(curve), _fmt(args)), args)
-    if args.plot:
-        _plot(curve, args.plot, "d", _title(args))
+    _run_curve(args, "separation")
 
 
 def cmd_load(args):
-    P = parse_list(args.P, log=True, name="--P")
-    curve = _model(args).load_curve(P)
-    _emit(_format_rows(_curve_rows(curve), _fmt(args)), args)
-    if args.plot:
-        _plot(curve, args.plot, "P", _title(args))
+    _run_curve(args, "load")
 
 
 def cmd_pulloff(args):
-    po = _model(args).pull_off(args.d_max)
-    row = {"pull_off": po.force, "d": po.d}
+    if _is_physical(args):
+        po = _contact(args).pull_off(args.d_max)
+        row = {"pull_off_N": po.force, "d_m": po.d}
+    else:
+        if args.gamma is None:
+            raise UsageError("pulloff needs --gamma (the adhesion parameter)")
+        po = _model(args).pull_off(args.d_max)
+        row = {"pull_off": po.force, "d": po.d}
     fmt = _fmt(args)
     if fmt == "json":
-        text = json.dumps({"pull_off": po.force, "d": None if math.isnan(po.d) else po.d}) + "\n"
+        text = json.dumps({k: None if math.isnan(v) else v for k, v in row.items()}) + "\n"
     else:
         text = _format_rows([row], fmt)
     _emit(text, args)
@@ -287,6 +383,14 @@ def cmd_md(args):
     _emit(_format_rows(rows, _fmt(args)), args)
 
 
+def cmd_materials(args):
+    from .materials import material_table
+
+    keys = ["name", "kind", "E_Pa", "nu", "b_m", "work_of_adhesion_J_m2"] + (["sources"] if args.sources else [])
+    rows = [{k: ("" if row.get(k) is None else row.get(k)) for k in keys} for row in material_table()]
+    _emit(_format_rows(rows, _fmt(args)), args)
+
+
 def cmd_reproduce(args):
     try:
         from .studies.report import reproduce
@@ -305,10 +409,10 @@ def cmd_reproduce(args):
 
 
 COMMANDS = {"separation": cmd_separation, "load": cmd_load, "pulloff": cmd_pulloff, "md": cmd_md,
-            "reproduce": cmd_reproduce}
+            "reproduce": cmd_reproduce, "materials": cmd_materials}
 
 
-_LIST_OPTIONS = ("--d", "--P", "--delta")
+_LIST_OPTIONS = ("--d", "--P", "--delta", "--separation", "--load")
 
 
 def _join_negative_lists(argv):

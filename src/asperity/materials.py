@@ -1,0 +1,334 @@
+r"""Real materials: elastic constants, Burgers vector and work of adhesion, with a table.
+
+The model (Adams, Müftü & Mohd Azhar) has **one elastic rough body on a rigid flat**:
+:math:`E^* = E/(1-\nu^2)`, :math:`G^* = 2G`, :math:`E^*/G = 2/(1-\nu)`, forces in units of
+:math:`Gb^2` and friction stresses in units of :math:`G^*`.  A :class:`Material` is such a
+body: Young's modulus ``E`` (Pa), Poisson's ratio ``nu``, Burgers vector ``b`` (m), work of
+adhesion ``w`` (J/m^2) and optionally the Dugdale range ``h`` (m) or stress ``sigma0`` (Pa).
+
+**Two elastic bodies** (:func:`pair`).  Contact mechanics combines them into
+:math:`E^* = [(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2]^{-1}` (Hertz, Johnson 1985 §4.2) and the
+paper's :math:`G^* = 2G_1G_2/(G_1+G_2)` (its Eq 2 normalisation).  The model only ever sees
+:math:`E^*` (normal force, Eqs 6, 14-17) and :math:`G^*` (friction stress, Eq 2), linked by
+:math:`E^*/G = 2/(1-\nu)` with :math:`G = G^*/2`.  So a pair is mapped onto an *equivalent
+single body on a rigid flat* with
+
+.. math::
+    G = G^*/2,\qquad \nu_{eff} = 1 - G^*/E^*,\qquad E_{eff} = (1+\nu_{eff})\,G^*,
+
+which reproduces both :math:`E^*` and :math:`G^*` exactly, so every formula of the model
+(and ``N G b^2`` as the force unit) holds unchanged.  Why: the alternative of keeping one
+body's :math:`\nu` would make :math:`E^*/G` inconsistent with the pair's :math:`E^*` and
+:math:`G^*`, i.e. the normal and friction forces would be scaled by different moduli.  A
+rigid second body recovers the body itself (:math:`\nu_{eff} = \nu`), and two identical
+bodies give :math:`\nu_{eff} = \nu`, :math:`E^* = E/2(1-\nu^2)`, :math:`G^* = G`.
+:math:`\nu_{eff}` must be a Poisson's ratio the model accepts, -1 < nu_eff < 0.5; a pair
+outside raises :class:`ValueError` (it has no equivalent isotropic body).  Since
+:math:`1-\nu_i = 2G_i(1-\nu_i^2)/E_i`, one finds
+:math:`\nu_{eff} = (\nu_1/G_1 + \nu_2/G_2)/(1/G_1 + 1/G_2)`, the compliance-weighted mean
+of the two Poisson's ratios, so two valid bodies always give a valid :math:`\nu_{eff}`;
+the check only guards rounding at the limits.
+
+The table ``asperity/data/materials.csv`` (:func:`material`, :func:`material_names`,
+:func:`material_table`) holds handbook values with a source for every number; missing
+values are empty, never guessed.
+
+References
+----------
+.. [1] K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), §4.2.
+.. [2] Adams, Müftü, Mohd Azhar, Eqs (2), (6), (14)-(16).
+"""
+
+from __future__ import annotations
+
+import csv
+import functools
+import math
+from dataclasses import dataclass
+from importlib import resources
+
+from .units import to_si
+
+__all__ = ["Material", "material", "material_names", "material_table", "pair"]
+
+#: Numeric columns of the table and their SI units.
+TABLE_UNITS = {
+    "E_Pa": "Pa",
+    "nu": "1",
+    "G_Pa": "Pa",
+    "lattice_constant_m": "m",
+    "b_m": "m",
+    "surface_energy_J_m2": "J/m^2",
+    "work_of_adhesion_J_m2": "J/m^2",
+}
+
+
+def _finite(value, name: str) -> float:
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a real number, got {value!r}") from None
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    return x
+
+
+def _positive(value, unit: str, name: str) -> float:
+    x = _finite(to_si(value, unit, name), name)
+    if x <= 0:
+        raise ValueError(f"{name} must be > 0 {unit} (valid range 0 < {name} < inf), got {value!r}")
+    return x
+
+
+def _optional_positive(value, unit: str, name: str, *, allow_zero: bool = False) -> float | None:
+    if value is None:
+        return None
+    x = _finite(to_si(value, unit, name), name)
+    if x < 0 or (x == 0 and not allow_zero):
+        bound = ">= 0" if allow_zero else "> 0"
+        raise ValueError(f"{name} must be {bound} {unit} or None (missing), got {value!r}")
+    return x
+
+
+def _poisson(value, name: str = "nu") -> float:
+    x = _finite(to_si(value, "", name), name)
+    if not -1.0 < x < 0.5:
+        raise ValueError(f"{name} (Poisson's ratio) must lie in (-1, 0.5), got {value!r}")
+    return x
+
+
+@dataclass(frozen=True)
+class Material:
+    r"""An elastic body against a rigid flat, in SI units.
+
+    Parameters
+    ----------
+    name : str
+        Label.
+    E : float or pint.Quantity
+        Young's modulus (Pa), > 0.
+    nu : float
+        Poisson's ratio, -1 < nu < 0.5.
+    b : float or pint.Quantity, optional
+        Burgers vector magnitude (m), > 0; None if unknown (a contact then needs one).
+    w : float or pint.Quantity, optional
+        Work of adhesion (J/m^2), >= 0; None if unknown.
+    h : float or pint.Quantity, optional
+        Dugdale range (m), > 0 (Maugis: :math:`w = \sigma_0 h`).  None: a contact uses
+        :math:`h = b` as in the paper.
+    sigma0 : float or pint.Quantity, optional
+        Dugdale stress (Pa), > 0, an alternative to ``h`` (needs ``w``; sets
+        :math:`h = w/\sigma_0`).  Giving both requires :math:`w = \sigma_0 h`.
+    components : tuple of str
+        For a :func:`pair`, the names of the two bodies; empty for one body.
+
+    Attributes
+    ----------
+    G : float
+        Shear modulus :math:`E/2(1+\nu)` (Pa).
+    E_star : float
+        Composite modulus against a rigid flat :math:`E/(1-\nu^2)` (Pa).
+    G_star : float
+        Effective shear modulus :math:`2G` (Pa), the unit of the friction stress (Eq 2).
+
+    Examples
+    --------
+    >>> au = Material("Au", E=78e9, nu=0.44, b=2.885e-10, w=3.012)
+    >>> round(au.G / 1e9, 2)
+    27.08
+    """
+
+    name: str
+    E: float
+    nu: float
+    b: float | None = None
+    w: float | None = None
+    h: float | None = None
+    sigma0: float | None = None
+    components: tuple[str, ...] = ()
+
+    def __post_init__(self):
+        setattr_ = functools.partial(object.__setattr__, self)
+        setattr_("name", str(self.name))
+        setattr_("E", _positive(self.E, "Pa", "E"))
+        setattr_("nu", _poisson(self.nu))
+        setattr_("b", _optional_positive(self.b, "m", "b"))
+        setattr_("w", _optional_positive(self.w, "J/m^2", "w", allow_zero=True))
+        setattr_("h", _optional_positive(self.h, "m", "h"))
+        setattr_("sigma0", _optional_positive(self.sigma0, "Pa", "sigma0"))
+        setattr_("components", tuple(str(c) for c in self.components))
+        self._check_dugdale()
+
+    def _check_dugdale(self):
+        if self.sigma0 is None:
+            return
+        if not self.w:
+            raise ValueError(f"sigma0 (Dugdale stress) needs a positive work of adhesion w; "
+                             f"{self.name!r} has w = {self.w!r}")
+        h = self.w / self.sigma0
+        if self.h is None:
+            object.__setattr__(self, "h", h)
+        elif not math.isclose(self.h, h, rel_tol=1e-9):
+            raise ValueError(f"h and sigma0 disagree: w = sigma0*h requires h = {h:.6g} m, got h = {self.h!r}")
+
+    @property
+    def G(self) -> float:
+        """Shear modulus E/(2(1+nu)) in Pa."""
+        return self.E / (2.0 * (1.0 + self.nu))
+
+    @property
+    def E_star(self) -> float:
+        """Composite Young's modulus E/(1-nu^2) against a rigid flat, in Pa."""
+        return self.E / (1.0 - self.nu**2)
+
+    @property
+    def G_star(self) -> float:
+        """Effective shear modulus 2G in Pa (friction stresses are tau_f/G*)."""
+        return 2.0 * self.G
+
+
+def _resolve(body) -> Material:
+    if isinstance(body, Material):
+        return body
+    if isinstance(body, str):
+        return material(body)
+    raise ValueError(f"a pair needs two Materials or material names, got {body!r}")
+
+
+def _pair_b(first: Material, second: Material, b):
+    if b is not None:
+        return b
+    known = {x for x in (first.b, second.b) if x is not None}
+    if len(known) > 1 and not math.isclose(first.b, second.b, rel_tol=1e-9):
+        raise ValueError(f"{first.name!r} and {second.name!r} have different Burgers vectors "
+                         f"({first.b:.4g} m, {second.b:.4g} m); pass b= explicitly")
+    return first.b if first.b is not None else second.b
+
+
+def _effective_poisson(one: Material, two: Material) -> float:
+    """1 - G*/E* as the 1/G-weighted mean of the two Poisson's ratios (no cancellation)."""
+    mean = (one.nu / one.G + two.nu / two.G) / (1.0 / one.G + 1.0 / two.G)
+    return min(max(mean, min(one.nu, two.nu)), max(one.nu, two.nu))  # a mean: rounding only
+
+
+def _check_effective_poisson(nu_eff: float, label: str) -> float:
+    if not -1.0 < nu_eff < 0.5:
+        raise ValueError(f"pair {label!r}: effective Poisson's ratio nu_eff = 1 - G*/E* = {nu_eff:.6g} "
+                         "lies outside (-1, 0.5); no equivalent isotropic body on a rigid flat exists")
+    return nu_eff
+
+
+def pair(first, second, *, w=None, b=None, h=None, name: str | None = None) -> Material:
+    r"""The equivalent single body (on a rigid flat) of two elastic bodies in contact.
+
+    Parameters
+    ----------
+    first, second : Material or str
+        The two bodies (a name is looked up with :func:`material`).
+    w : float or pint.Quantity, optional
+        Work of adhesion of the interface (J/m^2).  Default: for two bodies of the same
+        name, that body's ``w`` (its self-adhesion); otherwise None (unknown; Dupré's
+        :math:`\gamma_1+\gamma_2-\gamma_{12}` needs the interface energy).
+    b : float or pint.Quantity, optional
+        Burgers vector (m).  Default: the bodies' common ``b``, or the one that is known;
+        different values raise :class:`ValueError` (choose one explicitly).
+    h : float or pint.Quantity, optional
+        Dugdale range (m).
+    name : str, optional
+        Default ``"first/second"``.
+
+    Returns
+    -------
+    Material
+        With :math:`E^* = [(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2]^{-1}`,
+        :math:`G^* = 2G_1G_2/(G_1+G_2)`,
+        :math:`\nu = 1 - G^*/E^* = (\nu_1/G_1 + \nu_2/G_2)/(1/G_1 + 1/G_2)`,
+        :math:`E = (1+\nu)G^*`, so that ``E_star`` and ``G_star`` are the pair's.
+
+    Raises
+    ------
+    ValueError
+        If :math:`\nu_{eff} = 1 - G^*/E^*` lies outside (-1, 0.5), or the Burgers vectors
+        differ and ``b`` is not given.
+
+    References
+    ----------
+    Johnson, *Contact Mechanics* (1985) §4.2; Adams et al., Eq (2) (:math:`G^*`).
+    """
+    one, two = _resolve(first), _resolve(second)
+    g_star = 2.0 * one.G * two.G / (one.G + two.G)
+    label = name or f"{one.name}/{two.name}"
+    nu_eff = _check_effective_poisson(_effective_poisson(one, two), label)
+    if w is None and one.name.lower() == two.name.lower():
+        w = one.w
+    return Material(label, E=(1.0 + nu_eff) * g_star, nu=nu_eff, b=_pair_b(one, two, b), w=w, h=h,
+                    components=(one.name, two.name))
+
+
+# -- the table ---------------------------------------------------------------------------
+
+def _cell(row: dict, column: str) -> float | None:
+    text = (row.get(column) or "").strip()
+    return float(text) if text else None
+
+
+@functools.cache
+def _rows() -> tuple[dict, ...]:
+    text = resources.files("asperity").joinpath("data/materials.csv").read_text(encoding="utf-8")
+    lines = [line for line in text.splitlines() if line.strip() and not line.startswith("#")]
+    rows = []
+    for raw in csv.DictReader(lines):
+        row = {k: (v or "").strip() for k, v in raw.items()}
+        row.update({column: _cell(raw, column) for column in TABLE_UNITS})
+        rows.append(row)
+    return tuple(rows)
+
+
+def material_table() -> list[dict]:
+    """Every row of ``data/materials.csv`` as a dict (numbers as float in SI units, missing as None).
+
+    Keys: ``name``, ``kind``, ``components``, the numeric columns of :data:`TABLE_UNITS`,
+    ``slip_system`` and ``sources``.
+    """
+    return [dict(row) for row in _rows()]
+
+
+def material_names() -> list[str]:
+    """Names of the materials in the table (elements, compounds, then pairs such as ``'Au/Au'``)."""
+    return [row["name"] for row in _rows()]
+
+
+def _find(name: str) -> dict:
+    if not isinstance(name, str):
+        raise ValueError(f"material name must be a string, got {name!r}")
+    key = name.strip().lower()
+    for row in _rows():
+        if row["name"].lower() == key:
+            return row
+    raise ValueError(f"unknown material {name!r}; known: {', '.join(material_names())}")
+
+
+def material(name: str) -> Material:
+    """The :class:`Material` of a table row (case-insensitive name).
+
+    A pair row (e.g. ``'Au/Au'``, ``'Au/mica'``) gives :func:`pair` of its components with
+    the row's work of adhesion (None where the table has none).
+
+    Raises
+    ------
+    ValueError
+        For an unknown name (the message lists the known ones) or a row without ``E``/``nu``.
+
+    Examples
+    --------
+    >>> material("au").b
+    2.885e-10
+    """
+    row = _find(name)
+    if row["kind"] == "pair":
+        first, second = row["components"].split(";")
+        return pair(first, second, w=row["work_of_adhesion_J_m2"], name=row["name"])
+    if row["E_Pa"] is None or row["nu"] is None:
+        raise ValueError(f"material {row['name']!r} has no E/nu in the table")
+    return Material(row["name"], E=row["E_Pa"], nu=row["nu"], b=row["b_m"], w=row["work_of_adhesion_J_m2"])
+

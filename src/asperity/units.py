@@ -1,0 +1,167 @@
+"""Physical units at the edge of the library: pint quantities and unit strings to SI floats.
+
+Inside asperity every physical number is a plain float (or NumPy array) in SI units:
+metres, pascals, newtons, J/m^2, 1/m^2, m^2.  Two helpers convert at the boundary:
+
+* :func:`to_si` takes what a Python caller passes -- a number (taken as SI already) or a
+  `pint <https://pint.readthedocs.io>`_ ``Quantity`` -- and returns the SI magnitude.
+* :func:`parse_quantity` takes what a command line passes -- a string such as ``"2nm"``,
+  ``"1um"``, ``"1e12/m^2"``, ``"1mm^2"``, ``"1mN"``, ``"79GPa"`` or ``"1.2J/m^2"``.
+
+pint is optional (``pip install 'asperity[units]'``).  Without it, numbers work as before
+and any unit raises a :class:`ValueError` that says how to install it.  Every error names
+the parameter and the unit expected.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+__all__ = ["to_si", "parse_quantity", "is_quantity", "unit_registry"]
+
+_INSTALL = "pip install 'asperity[units]'"
+
+
+def is_quantity(value) -> bool:
+    """True if ``value`` looks like a pint ``Quantity`` (duck-typed; pint need not be installed)."""
+    return all(hasattr(value, attr) for attr in ("magnitude", "units", "dimensionality", "to"))
+
+
+@functools.cache
+def unit_registry():
+    """The shared :class:`pint.UnitRegistry` used to parse strings.
+
+    Raises
+    ------
+    ImportError
+        If pint is not installed (``pip install 'asperity[units]'``).
+    """
+    try:
+        import pint
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise ImportError(f"units need pint: {_INSTALL}") from None
+    return pint.UnitRegistry()
+
+
+def _unit_label(unit: str) -> str:
+    return unit if unit else "dimensionless"
+
+
+def _convert(quantity, unit: str, name: str):
+    """Magnitude of a pint quantity in ``unit``; ValueError naming ``name`` if incompatible."""
+    try:
+        converted = quantity.to(unit or "dimensionless")
+    except Exception as err:  # pint.DimensionalityError, UndefinedUnitError, ...
+        raise ValueError(f"{name} must have units compatible with {_unit_label(unit)}, got "
+                         f"{quantity!s} ({type(err).__name__}: {err})") from None
+    magnitude = converted.magnitude
+    return float(magnitude) if np.ndim(magnitude) == 0 else np.asarray(magnitude, dtype=float)
+
+
+def to_si(value, unit: str, name: str):
+    """Return ``value`` in the SI unit ``unit``: pint quantities converted, numbers unchanged.
+
+    Parameters
+    ----------
+    value : float, array_like, pint.Quantity or str
+        A plain number or array is taken to be in ``unit`` already and returned as is.
+        A pint ``Quantity`` is converted.  A string is parsed by :func:`parse_quantity`
+        (a unit is then required).  A list or tuple holding quantities or strings is
+        converted element by element to an array.
+    unit : str
+        Target SI unit in pint syntax, e.g. ``"m"``, ``"Pa"``, ``"N"``, ``"J/m^2"``,
+        ``"1/m^2"``, ``"m^2"``; ``""`` for a dimensionless number.
+    name : str
+        Parameter name used in error messages.
+
+    Returns
+    -------
+    float or ndarray or the input
+        The magnitude in ``unit``.
+
+    Raises
+    ------
+    ValueError
+        If a quantity's dimensionality does not match ``unit`` (the message names
+        ``name`` and the expected unit).
+
+    Examples
+    --------
+    >>> to_si(2e-9, "m", "sigma_s")
+    2e-09
+    """
+    if isinstance(value, str):
+        return parse_quantity(value, unit, name)
+    if is_quantity(value):
+        return _convert(value, unit, name)
+    if isinstance(value, list | tuple) and any(is_quantity(v) or isinstance(v, str) for v in value):
+        return np.array([to_si(v, unit, name) for v in value], dtype=float)
+    return value
+
+
+def _plain_number(text: str):
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True) -> float:
+    """Parse a command-line quantity such as ``"2nm"`` or ``"79GPa"`` to a float in ``unit``.
+
+    Parameters
+    ----------
+    text : str
+        A number with a unit (``"2nm"``, ``"1 um"``, ``"1e12/m^2"``, ``"1mm^2"``,
+        ``"1mN"``, ``"79GPa"``, ``"1.2J/m^2"``) or, if ``require_unit`` is False or
+        ``unit`` is dimensionless, a bare number taken to be in ``unit``.
+    unit : str
+        SI unit of the result (pint syntax); ``""`` for dimensionless.
+    name : str
+        Parameter name used in error messages.
+    require_unit : bool
+        If True (default) a bare number for a dimensional quantity is an error, so
+        ``--sigma 2`` cannot silently mean 2 metres.
+
+    Returns
+    -------
+    float
+        The value in ``unit``.
+
+    Raises
+    ------
+    ValueError
+        If the unit is missing (when required), unknown or of the wrong dimension, or if
+        a unit is given but pint is not installed.  The message names ``name`` and the
+        expected unit.
+
+    Examples
+    --------
+    >>> parse_quantity("2nm", "m", "sigma_s")
+    2e-09
+    """
+    if not isinstance(text, str):
+        raise ValueError(f"{name} must be a string such as '2nm', got {text!r}")
+    stripped = text.strip()
+    number = _plain_number(stripped)
+    if number is not None:
+        if require_unit and unit:
+            raise ValueError(f"{name} needs a unit compatible with {unit} (e.g. '{stripped} {unit}'), "
+                             f"got the bare number {text!r}")
+        return number
+    try:
+        registry = unit_registry()
+    except ImportError:
+        raise ValueError(f"{name} = {text!r} has a unit; reading units needs pint: {_INSTALL} "
+                         f"(or give a plain number in {_unit_label(unit)})") from None
+    try:
+        quantity = registry.parse_expression(stripped)
+    except Exception as err:
+        raise ValueError(f"{name} = {text!r} is not a quantity with a unit compatible with "
+                         f"{_unit_label(unit)} ({type(err).__name__}: {err})") from None
+    if not is_quantity(quantity):  # pint returns a plain number for e.g. '2*3'
+        return parse_quantity(repr(float(quantity)), unit, name, require_unit=require_unit)
+    value = _convert(quantity, unit, name)
+    return float(value)
