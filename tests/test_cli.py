@@ -208,3 +208,33 @@ def test_materials_listing(capsys):
 def test_physical_errors(capsys, argv, needle):
     code, _, err = run(capsys, *argv)
     assert code == 2 and err.count("\n") == 1 and needle in err, err
+
+
+def test_surface_command(capsys, tmp_path):
+    pytest.importorskip("SurfaceTopography")
+    from SurfaceTopography import Topography
+
+    from asperity.topography import analyse_surface
+
+    x = np.arange(128) * 10e-9
+    h = 2e-9 * (np.sin(2 * np.pi * x / 160e-9)[:, None] * np.sin(2 * np.pi * x / 160e-9)[None, :])
+    path = tmp_path / "scan.x3p"
+    Topography(h, (1.28e-6, 1.28e-6), unit="m").to_x3p(str(path))
+    code, out, _ = run(capsys, "surface", str(path), "--material", "Au", "--format", "json")
+    assert code == 0
+    got = json.loads(out)
+    from asperity.materials import material
+
+    ref = analyse_surface(path, material=material("Au")).to_dict()
+    for method in ("spectral", "detected"):
+        for key in ("sigma_s", "radius", "density"):
+            assert got[method][key] == pytest.approx(ref[method][key], rel=1e-15)
+    assert got["groups"]["spectral"]["beta"] == pytest.approx(ref["groups"]["spectral"]["beta"], rel=1e-15)
+    code, out, _ = run(capsys, "surface", str(path), "--b", "0.3nm", "--format", "table")
+    assert code == 0 and "spectral" in out and "detected" in out
+    bad = tmp_path / "bad.x3p"
+    bad.write_bytes(b"\x00\x01garbage")
+    for argv in (["surface", str(bad)], ["surface", str(tmp_path / "missing.txt")],
+                 ["surface", str(path), "--material", "Au", "--b", "1nm"]):
+        code, _, err = run(capsys, *argv)
+        assert code == 2 and err.count("\n") == 1 and "Traceback" not in err

@@ -147,6 +147,21 @@ def build_parser() -> argparse.ArgumentParser:
                     help="largest separation d/sigma searched (default 10)")
     _output_args(po, plot=False)
 
+    srf = sub.add_parser("surface", help="GW summit parameters of a measured surface (AFM map, profile)",
+                         description="Read a height map or line scan (any format SurfaceTopography reads) "
+                                     "and compute the summit parameters sigma_s, R, eta two ways: from the "
+                                     "spectral moments m0, m2, m4 (Nayak/McCool) and by summit detection. "
+                                     "With --material, also alpha and beta (Eq 7). Needs asperity[topography].")
+    srf.add_argument("file", help="height map or profile file")
+    srf.add_argument("--material", help="material name for alpha, beta (its Burgers vector b)")
+    srf.add_argument("--b", help="Burgers vector, a length (e.g. 0.2885nm), instead of --material")
+    srf.add_argument("--size", help="scan size when the file stores none: Lx,Ly or L with units (e.g. 10um,10um)")
+    srf.add_argument("--unit", help="height/length unit when the file stores none (e.g. nm)")
+    srf.add_argument("--fill-undefined", action="store_true", help="fill missing (NaN) pixels by interpolation")
+    srf.add_argument("--format", choices=("table", "json"), default=None,
+                     help="output format (default: a readable summary on a terminal, JSON otherwise)")
+    srf.add_argument("-o", "--output", metavar="FILE", help="write to FILE instead of standard output")
+
     mat = sub.add_parser("materials", help="list the materials table (SI units, with sources)",
                          description="The shipped materials table: E [Pa], nu, Burgers vector b [m], "
                                      "work of adhesion w [J/m^2]; empty = missing, with sources.")
@@ -383,6 +398,34 @@ def cmd_md(args):
     _emit(_format_rows(rows, _fmt(args)), args)
 
 
+def cmd_surface(args):
+    from .units import parse_quantity
+
+    try:
+        import SurfaceTopography  # noqa: F401
+
+        from .topography import analyse_surface
+    except ImportError:
+        raise UsageError("surface needs SurfaceTopography: pip install 'asperity[topography]'") from None
+    kwargs = {"fill_undefined": args.fill_undefined}
+    if args.size:
+        kwargs["physical_sizes"] = tuple(parse_quantity(x, "m", "--size") for x in args.size.split(","))
+    if args.unit:
+        kwargs["unit"] = args.unit
+    b = parse_quantity(args.b, "m", "--b") if args.b else None
+    if args.material and b is not None:
+        raise UsageError("give --material or --b, not both")
+    mat = None
+    if args.material:
+        from .materials import material
+
+        mat = material(args.material)
+    result = analyse_surface(args.file, material=mat, b=b, **kwargs)
+    fmt = args.format or ("table" if (args.output is None and sys.stdout.isatty()) else "json")
+    text = result.summary() + "\n" if fmt == "table" else json.dumps(result.to_dict(), indent=1) + "\n"
+    _emit(text, args)
+
+
 def cmd_materials(args):
     from .materials import material_table
 
@@ -409,7 +452,7 @@ def cmd_reproduce(args):
 
 
 COMMANDS = {"separation": cmd_separation, "load": cmd_load, "pulloff": cmd_pulloff, "md": cmd_md,
-            "reproduce": cmd_reproduce, "materials": cmd_materials}
+            "reproduce": cmd_reproduce, "materials": cmd_materials, "surface": cmd_surface}
 
 
 _LIST_OPTIONS = ("--d", "--P", "--delta", "--separation", "--load")
