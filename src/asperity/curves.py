@@ -18,6 +18,7 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
+from ._csv import columns_to_csv
 from ._validation import as_float_array
 from .asperity_law import ModelParameters
 from .heights import GAUSSIAN, HeightDistribution
@@ -76,23 +77,7 @@ class CurveResult:
 
     def to_csv(self, path_or_buffer=None) -> str | None:
         """Write CSV (a header line of column names, then rows); return it if no path."""
-        import csv
-        import io
-
-        buffer = io.StringIO()
-        writer = csv.writer(buffer, lineterminator="\n")
-        writer.writerow(list(COLUMNS))
-        for row in zip(*self.columns().values(), strict=True):
-            writer.writerow([repr(float(v)) for v in row])
-        text = buffer.getvalue()
-        if path_or_buffer is None:
-            return text
-        if hasattr(path_or_buffer, "write"):
-            path_or_buffer.write(text)
-        else:
-            with open(path_or_buffer, "w", encoding="utf-8") as fh:
-                fh.write(text)
-        return None
+        return columns_to_csv(self.columns(), path_or_buffer)
 
 
 @dataclass(frozen=True)

@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import groups
+from ._csv import columns_to_csv
 from ._validation import as_float_array, check_nonnegative, check_positive
 from .curves import CurveResult, Model, PullOff
 from .friction_stress import ConstantShear, FrictionLaw
@@ -172,24 +173,7 @@ class PhysicalCurve:
 
     def to_csv(self, path_or_buffer=None) -> str | None:
         """Write CSV (header of column names with units, e.g. ``d_m,P_N,...``); return it if no path."""
-        import csv
-        import io
-
-        buffer = io.StringIO()
-        writer = csv.writer(buffer, lineterminator="\n")
-        columns = self.columns()
-        writer.writerow(list(columns))
-        for row in zip(*columns.values(), strict=True):
-            writer.writerow([repr(float(v)) for v in row])
-        text = buffer.getvalue()
-        if path_or_buffer is None:
-            return text
-        if hasattr(path_or_buffer, "write"):
-            path_or_buffer.write(text)
-        else:
-            with open(path_or_buffer, "w", encoding="utf-8") as fh:
-                fh.write(text)
-        return None
+        return columns_to_csv(self.columns(), path_or_buffer)
 
 
 @dataclass(frozen=True)
