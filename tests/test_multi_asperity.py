@@ -140,3 +140,28 @@ def test_mu_and_pressure_undefined_cases():
 def test_shape_preserved():
     d = np.linspace(0, 2, 6).reshape(2, 3)
     assert normal_force(d, 0.01, 100.0).shape == (2, 3)
+
+
+class PlainGaussian(asperity.HeightDistribution):
+    """The Gaussian through the generic interface only (no factorised sums)."""
+
+    def pdf(self, z):
+        z = np.asarray(z, dtype=float)
+        return np.exp(-0.5 * z * z) / math.sqrt(2 * math.pi)
+
+    def pdf_derivative(self, z, order):
+        z = np.asarray(z, dtype=float)
+        return (-z if order == 1 else z * z - 1.0) * self.pdf(z)
+
+    def sf(self, z):
+        return 0.5 * np.vectorize(math.erfc)(np.asarray(z) / math.sqrt(2))
+
+
+def test_a_user_distribution_runs_through_the_generic_interface():
+    P = np.geomspace(0.1, 1e4, 30)
+    ref = asperity.load_curve(P, 0.01, 1000, 1e-3)
+    got = asperity.load_curve(P, 0.01, 1000, 1e-3, heights=PlainGaussian())
+    for key in ("d", "F", "area", "contacts"):
+        np.testing.assert_allclose(getattr(got, key), getattr(ref, key), rtol=1e-11)
+    assert asperity.pull_off(0.003, 1000, 1e-3, heights=PlainGaussian()).force == pytest.approx(
+        asperity.pull_off(0.003, 1000, 1e-3).force, rel=1e-11)

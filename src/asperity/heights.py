@@ -34,7 +34,12 @@ _SQRT_2PI = math.sqrt(2.0 * math.pi)
 
 
 class HeightDistribution(abc.ABC):
-    """Interface of a distribution of asperity heights (in units of sigma)."""
+    """Interface of a distribution of asperity heights (in units of sigma).
+
+    The quadrature nodes are placed for a smooth density on [-z_top, z_top]: a density
+    with a kink or a finite support edge (exponential, Weibull) should also override
+    :meth:`weighted_sums` or add its own breakpoints; the Gaussian needs neither.
+    """
 
     #: Heights above this carry a negligible share of any integral (pdf < ~1e-22).
     z_top: float = 10.0
