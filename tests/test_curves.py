@@ -4,6 +4,8 @@ import io
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import asperity
 
@@ -142,3 +144,18 @@ def test_bad_loads_without_adhesion(P):
 def test_bad_d_max():
     with pytest.raises(ValueError, match="d_max"):
         asperity.pull_off(0.01, 1000, 1e-3, d_max=-1)
+
+
+@settings(max_examples=25)
+@given(st.floats(1e-3, 0.3), st.floats(10.0, 1e6), st.one_of(st.just(0.0), st.floats(1e-6, 5e-2)),
+       st.floats(-2.0, 6.0))
+def test_load_curve_inverts_at_random_parameters(alpha, beta, gamma, log_load):
+    P = 10.0**log_load * np.array([1.0, 3.0])
+    lc = asperity.load_curve(P, alpha, beta, gamma)
+    sc = asperity.separation_curve(lc.d, alpha, beta, gamma)
+    # With strong adhesion a small load is a difference of large compressive and tensile
+    # parts: compare on the compressive (Hertz) scale at the same separation.
+    scale = asperity.separation_curve(lc.d, alpha, beta, 0.0).P
+    np.testing.assert_allclose(sc.P, P, rtol=1e-9, atol=1e-10 * scale.max())
+    np.testing.assert_allclose(sc.F, lc.F, rtol=1e-9)
+    assert lc.d[1] < lc.d[0]
