@@ -159,3 +159,34 @@ def test_load_curve_inverts_at_random_parameters(alpha, beta, gamma, log_load):
     np.testing.assert_allclose(sc.P, P, rtol=1e-9, atol=1e-10 * scale.max())
     np.testing.assert_allclose(sc.F, lc.F, rtol=1e-9)
     assert lc.d[1] < lc.d[0]
+
+
+def test_no_pull_off_zero_load_has_no_equilibrium():
+    m = asperity.Model(0.1, 1000, 1e-3)
+    assert not m.pull_off().exists
+    with pytest.raises(ValueError, match="P"):
+        m.load_curve([0.0, 1.0])
+    lc = m.load_curve([1e-30, 1.0])  # tiny but positive: the flat far out
+    np.testing.assert_allclose(m.separation_curve(lc.d).P, [1e-30, 1.0], rtol=1e-9)
+
+
+def test_pull_off_beyond_ten_sigma_for_a_long_adhesive_range():
+    # delta_hat ~ 38: asperities stay in adhesive contact ~34 sigma below their tops.
+    po = asperity.pull_off(1e-3, 10, 1e-3)
+    assert po.exists and po.d > 10
+    d = np.linspace(-3, asperity.Model(1e-3, 10, 1e-3).d_search, 3001)
+    scan = asperity.separation_curve(d, 1e-3, 10, 1e-3).P
+    assert po.force == pytest.approx(-scan.min(), rel=1e-6)
+    lc = asperity.load_curve([-0.98 * po.force], 1e-3, 10, 1e-3)
+    assert 10 < lc.d[0] < po.d
+
+
+def test_results_do_not_depend_on_call_history():
+    m = asperity.Model(0.01, 1000, 1e-3)
+    first = m.separation_curve([9.0])
+    m.separation_curve([-3.0])
+    again = m.separation_curve([9.0])
+    for key in ("P", "F", "area", "contacts"):
+        assert getattr(again, key)[0] == pytest.approx(getattr(first, key)[0], rel=1e-12)
+    from scipy.special import ndtr
+    assert asperity.separation_curve([9.0], 0.01, 1000).contacts[0] == pytest.approx(ndtr(-9.0), rel=1e-12)

@@ -143,8 +143,9 @@ def build_parser() -> argparse.ArgumentParser:
                         description="Largest tensile force |P|/(N G b^2) over separations up to "
                                     "d_max, and where it occurs.")
     _model_args(po)
-    po.add_argument("--d-max", dest="d_max", type=float, default=10.0,
-                    help="largest separation d/sigma searched (default 10)")
+    po.add_argument("--d-max", dest="d_max", type=float, default=None,
+                    help="largest separation d/sigma searched (default: 10 beyond the end of the asperities' "
+                         "stable branch, i.e. 10 without adhesion range)")
     _output_args(po, plot=False)
 
     srf = sub.add_parser("surface", help="GW summit parameters of a measured surface (AFM map, profile)",

@@ -20,7 +20,8 @@ import numpy as np
 
 from ._csv import columns_to_csv
 from ._validation import as_float_array
-from .asperity_law import ModelParameters
+from ._validation import scalar as _scalar
+from .asperity_law import AsperityLaw, ModelParameters
 from .heights import GAUSSIAN, HeightDistribution
 from .multi_asperity import (
     D_MAX,
@@ -129,6 +130,11 @@ class Model:
         if not isinstance(heights, HeightDistribution):
             raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
         self.heights = heights
+        self.law = AsperityLaw(self.params)
+        #: Largest valid separation: beyond it every quantity underflows.
+        self.d_top = D_MAX - self.law.u_end
+        #: Default reach of the pull-off search: 10 sigma past the end of the stable branch.
+        self.d_search = 10.0 - self.law.u_end
         self._tab: Tabulation | None = None
         self._pull_off: dict[float, PullOff] = {}
 
@@ -140,10 +146,7 @@ class Model:
             return tab
         if tab is not None:
             d_min, d_max = min(d_min, tab.d_min), max(d_max, tab.d_max)
-            law = tab.law
-        else:
-            law = None
-        self._tab = Tabulation(self.params, d_min, d_max, self.heights, law=law)
+        self._tab = Tabulation(self.params, d_min, d_max, self.heights, law=self.law)
         return self._tab
 
     def _parameters(self):
@@ -160,15 +163,22 @@ class Model:
     # -- curves ---------------------------------------------------------------------
     def separation_curve(self, d) -> CurveResult:
         """All quantities at separations ``d`` (Eqs 5, 6/18, 10, 21, 1)."""
-        d = check_separation(d).ravel()
+        d = check_separation(d, d_max=self.d_top).ravel()
         tab = self.tabulation(float(d.min()), max(float(d.max()), 10.0))
         return self._result(d, tab.sums(d)[0])
 
-    def pull_off(self, d_max: float = 10.0) -> PullOff:
-        """Largest tensile force over separations up to ``d_max`` (Table 1, Fig 7)."""
-        d_max = float(as_float_array(d_max, "d_max"))
-        if not 0.0 < d_max <= D_MAX:
-            raise ValueError(f"d_max must lie in (0, {D_MAX:g}], got {d_max!r}")
+    def pull_off(self, d_max: float | None = None) -> PullOff:
+        """Largest tensile force over separations from -3 to ``d_max`` (Table 1, Fig 7).
+
+        ``d_max`` defaults to :attr:`d_search`, 10 sigma beyond the end of the asperities'
+        stable branch (10 - u_end; u_end = 0 without adhesion): far enough that the force
+        there is a negligible remnant, whatever the adhesion range.
+        """
+        if d_max is None:
+            d_max = self.d_search
+        d_max = float(_scalar(d_max, "d_max"))
+        if not 0.0 < d_max <= self.d_top:
+            raise ValueError(f"d_max must lie in (0, {self.d_top:.6g}], got {d_max!r}")
         if d_max not in self._pull_off:
             self._pull_off[d_max] = self._find_pull_off(d_max)
         return self._pull_off[d_max]
@@ -178,7 +188,7 @@ class Model:
             return PullOff(0.0, math.nan, False)
         d_lo = -3.0
         tab = self.tabulation(d_lo, d_max)
-        grid = np.linspace(d_lo, d_max, int(round((d_max - d_lo) / 0.02)) + 1)
+        grid = np.linspace(d_lo, d_max, int(min(4000, round((d_max - d_lo) / 0.02))) + 1)
         P = tab.sums(grid)[0][:, 1]
         i = int(np.argmin(P))
         if P[i] >= 0.0:
@@ -214,44 +224,40 @@ class Model:
             pull-off force with adhesion (no equilibrium exists).
         """
         P = as_float_array(P, "P").ravel()
-        adhesive = self.params.adhesive
-        if not adhesive and np.any(P <= 0):
+        if not self.params.adhesive and np.any(P <= 0):
             raise ValueError("P (load) must be > 0 without adhesion (gamma = 0); "
                              f"got min {P.min():g}")
-        d_hi = 10.0
+        d_hi = self.d_search
         d_lo = self._bracket_low(float(P.max()), d_hi)
         tab = self.tabulation(d_lo, d_hi)
-        n = int(np.clip((d_hi - d_lo) / 0.035, 100, 800))
-        grid = np.linspace(d_lo, d_hi, n)
-        g0, g1 = tab.sums(grid, order=1)
-        Pg, dPg = g0[:, 1], g1[:, 1]
-        if adhesive:
-            i = int(np.argmin(Pg))
-            if P.min() < Pg[i]:
-                po = self.pull_off(d_hi)
-                if P.min() < -po.force:
-                    raise ValueError(
-                        f"P (load) must be >= {-po.force:.6g}, minus the pull-off force: no "
-                        f"equilibrium under a more tensile load; got min {P.min():g}")
-                if po.exists:
-                    grid = np.append(grid[:i], po.d)
-                    dPg = np.append(dPg[:i], 0.0)
-                    Pg = np.append(Pg[:i], -po.force)
-            else:
-                grid, Pg, dPg = grid[:i + 1], Pg[:i + 1], dPg[:i + 1]
-        elif P.min() < Pg[-1]:
-            if d_hi < D_MAX:  # tiny loads: the flat is far out
-                d_hi = D_MAX
-                tab = self.tabulation(d_lo, d_hi)
-                grid = np.append(grid, np.linspace(10.0, D_MAX, 200)[1:])
-                g0, g1 = tab.sums(grid, order=1)
-                Pg, dPg = g0[:, 1], g1[:, 1]
-            if P.min() < Pg[-1]:
-                raise ValueError(f"P (load) must be >= {Pg[-1]:.6g} (the force at d/sigma = "
-                                 f"{D_MAX:g}); got min {P.min():g}")
+        grid, Pg, dPg = self._grid(tab, d_lo, d_hi)
+        i = int(np.argmin(Pg))
+        if Pg[i] < 0:  # a pull-off force exists: the branch ends there
+            po = self.pull_off(d_hi)
+            floor = -po.force
+            grid, Pg, dPg = np.append(grid[:i], po.d), np.append(Pg[:i], floor), np.append(dPg[:i], 0.0)
+        else:
+            grid, Pg, dPg = grid[:i + 1], Pg[:i + 1], dPg[:i + 1]
+            if P.min() < Pg[-1] and grid[-1] < self.d_top:  # tiny loads: the flat is far out
+                tab = self.tabulation(d_lo, self.d_top)
+                more, Pm, dPm = self._grid(tab, grid[-1], self.d_top, n=200)
+                grid, Pg, dPg = (np.append(x, y[1:]) for x, y in ((grid, more), (Pg, Pm), (dPg, dPm)))
+            floor = Pg[-1]
+        if P.min() < floor:
+            what = "minus the pull-off force" if floor < 0 else f"the force at d/sigma = {grid[-1]:.4g}"
+            raise ValueError(f"P (load) must be >= {floor:.6g} ({what}): no equilibrium under a smaller "
+                             f"load; got min {P.min():g}")
         d, sums = self._invert(tab, P, grid, Pg, dPg)
         sums[:, 1] = P  # solved for to rounding; report the load asked for
         return self._result(d, sums)
+
+    @staticmethod
+    def _grid(tab, d_lo, d_hi, n=None):
+        """Separations from d_lo to d_hi with the force and its derivative there."""
+        n = int(np.clip((d_hi - d_lo) / 0.035, 100, 800)) if n is None else n
+        grid = np.linspace(d_lo, d_hi, n)
+        g0, g1 = tab.sums(grid, order=1)
+        return grid, g0[:, 1], g1[:, 1]
 
     def _bracket_low(self, P_max, d_hi):
         """A separation where the force exceeds every requested load."""
@@ -373,8 +379,8 @@ def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None
 
 
 def pull_off(alpha, beta, gamma, *, nu=0.3, h_over_b=1.0, friction=None, heights=GAUSSIAN,
-             d_max=10.0) -> PullOff:
-    """Pull-off force :math:`|P|/(NGb^2)`: the largest tensile force for d <= d_max (Table 1).
+             d_max=None) -> PullOff:
+    """Pull-off force :math:`|P|/(NGb^2)`: the largest tensile force for -3 <= d <= d_max (Table 1).
 
     See :meth:`Model.pull_off`.
     """

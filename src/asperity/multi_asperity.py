@@ -44,18 +44,21 @@ __all__ = [
     "friction_coefficient",
 ]
 
-#: Valid separations d/sigma.  Beyond 30 every quantity underflows double precision.
+#: Valid separations d/sigma: D_MAX beyond the end of the asperities' stable branch
+#: (30 for Hertz) every quantity underflows double precision.
 D_MIN, D_MAX = -1.0e4, 30.0
 
 # Column order of the tabulated integrands.
 _COLUMNS = ("contacts", "P", "F", "area")
-_CHUNK = 200_000  # matrix elements per block, to bound memory
+_BLOCK_SPAN = 8.0  # separations (in sigma) summed together
+_BLOCK_ROWS = 2000  # and at most this many at once, to bound memory
 
 
-def check_separation(d, name="d"):
+def check_separation(d, name="d", d_max=D_MAX):
+    """Separations as a float array within [D_MIN, d_max] (d_max: where everything underflows)."""
     d = as_float_array(d, name)
-    if np.any((d < D_MIN) | (d > D_MAX)):
-        raise ValueError(f"{name} (separation d/sigma) must lie in [{D_MIN:g}, {D_MAX:g}], "
+    if np.any((d < D_MIN) | (d > d_max)):
+        raise ValueError(f"{name} (separation d/sigma) must lie in [{D_MIN:g}, {d_max:.6g}], "
                          f"got values from {d.min():g} to {d.max():g}")
     return d
 
@@ -81,17 +84,16 @@ class Tabulation:
         self.d_min, self.d_max = float(d_min), float(d_max)
         law = self.law
         z_top = heights.z_top
-        u_top = max(z_top - self.d_min, law.u_end + 1.0)
+        # For a separation d the integrand peaks at u* = max(u_end, -d) and is negligible
+        # (< phi(z_top) relative) beyond u* + z_top and below -d - z_top.
+        u_top = max(z_top - self.d_min, law.u_end + z_top)
+        u_bottom = -z_top - self.d_max
         first = law.scale
         for bp in law.breakpoints:
             if bp > law.u_end:
                 first = min(first, (bp - law.u_end) / 3.0)
-        first = min(first, 1.0)
-        edges = panel_edges(law.u_end, u_top, first, law.breakpoints)
-        # Heights below -z_top never matter: drop panels that only serve them.
-        u_bottom = -z_top - self.d_max
-        if u_bottom > edges[0]:
-            edges = np.concatenate([[u_bottom], edges[edges > u_bottom]])
+        first = min(first, 0.2)  # the s^4 panel: keep the density smooth in s across it
+        edges = panel_edges(law.u_end, u_top, first, law.breakpoints, lo_clip=u_bottom)
         u, w = composite_nodes(edges)
         a, P = law.evaluate(u)
         F = law.friction(a)
@@ -122,21 +124,35 @@ class Tabulation:
         return self.d_min <= d_min and d_max <= self.d_max
 
     def sums(self, d, order=0):
-        """``[S_0, .., S_order]``: the four integrals (columns) and their d-derivatives."""
+        """``[S_0, .., S_order]``: the four integrals (columns) and their d-derivatives.
+
+        Separations are sorted into blocks spanning at most a few sigma; each block sums
+        only the nodes its height densities reach, so wide load ranges stay cheap.
+        """
         d = np.asarray(d, dtype=float).ravel()
-        h = self.heights
-        rows = max(1, _CHUNK // max(1, self.direct_u.size + 2 * NODES_PER_PANEL))
         out = [np.zeros((d.size, 4)) for _ in range(order + 1)]
-        for i in range(0, d.size, rows):
-            block = d[i:i + rows]
-            parts = [h.weighted_sums(block, self.direct_u, self.direct_w, order)]
-            if self.centers.size:
-                parts.append(h.panel_sums(block, self.centers, self.offsets, self.panel_w,
-                                          order))
-            for part in parts:
-                for j in range(order + 1):
-                    out[j][i:i + rows] += part[j]
+        order_idx = np.argsort(d, kind="stable")
+        ds = d[order_idx]
+        z_top = self.heights.z_top
+        i = 0
+        while i < ds.size:
+            j = int(np.searchsorted(ds, ds[i] + _BLOCK_SPAN, side="right"))
+            j = min(j, i + _BLOCK_ROWS)
+            block = ds[i:j]
+            lo, hi = -block[-1] - z_top, max(self.law.u_end, -block[0]) + z_top
+            for k, part in enumerate(self._block_sums(block, lo, hi, order)):
+                out[k][order_idx[i:j]] = part
+            i = j
         return out
+
+    def _block_sums(self, block, lo, hi, order):
+        h = self.heights
+        a, b = np.searchsorted(self.direct_u, [lo, hi])
+        parts = [h.weighted_sums(block, self.direct_u[a:b], self.direct_w[a:b], order)]
+        a, b = np.searchsorted(self.centers, [lo - 1.0, hi + 1.0])
+        if b > a:
+            parts.append(h.panel_sums(block, self.centers[a:b], self.offsets, self.panel_w[a:b], order))
+        return [sum(p[k] for p in parts) for k in range(order + 1)]
 
     def evaluate(self, d):
         """Dict of contacts, P, F, area at separations ``d`` (any shape)."""
@@ -146,10 +162,13 @@ class Tabulation:
 
 
 def _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights):
-    d = check_separation(d)
     kwargs = {} if friction is None else {"friction": friction}
     params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
-    tab = Tabulation(params, float(d.min()), float(d.max()), heights)
+    if not isinstance(heights, HeightDistribution):
+        raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
+    law = AsperityLaw(params)
+    d = check_separation(d, d_max=D_MAX - law.u_end)
+    tab = Tabulation(params, float(d.min()), float(d.max()), heights, law=law)
     return tab.evaluate(d), params
 
 

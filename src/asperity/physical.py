@@ -355,8 +355,11 @@ class PhysicalContact:
             raise ValueError(f"{err} (loads in units of N G b^2 = {self.force_scale:.6g} N)") from None
         return self._physical(curve, P=P)
 
-    def pull_off(self, d_max: float = 10.0) -> PhysicalPullOff:
-        """Pull-off force (N) and its separation (m); ``d_max`` bounds the search in units of sigma_s."""
+    def pull_off(self, d_max: float | None = None) -> PhysicalPullOff:
+        """Pull-off force (N) and its separation (m).
+
+        ``d_max`` bounds the search in units of sigma_s (default: see :meth:`asperity.Model.pull_off`).
+        """
         po = self.model.pull_off(d_max)
         return PhysicalPullOff(force=po.force * self.force_scale, d=po.d * self.surface.sigma_s,
                                exists=po.exists, dimensionless=po)

@@ -4,10 +4,10 @@ The multi-asperity integrals are integrals over penetration ``u`` of a per-asper
 law times the height density.  The law has a square-root endpoint (Hertz at u = 0,
 Maugis-Dugdale at the end of its stable branch) and kinks (Hurtado-Kim breakpoints);
 the density must be resolved wherever it is centred.  So: a first panel with the
-substitution ``u = u0 + s^2`` (which makes a square-root endpoint analytic), panels
+substitution ``u = u0 + s^4`` (which makes the square-root and fourth-root endpoints analytic), panels
 growing geometrically away from the endpoint (which keeps every panel at least half
 its width away from the endpoint singularity), the law's breakpoints as panel
-boundaries, and unit-width panels further out.  Sixteen nodes per panel give errors
+boundaries, and unit-width panels on integer edges further out.  Sixteen nodes per panel give errors
 far below 1e-12 for every integrand met here (see the tests against adaptive
 quadrature and closed forms).
 """
@@ -15,6 +15,7 @@ quadrature and closed forms).
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 
@@ -31,35 +32,48 @@ def gauss_legendre(n: int):
     return 0.5 * (x + 1.0), 0.5 * w
 
 
-def panel_edges(start, stop, first, breakpoints=(), max_width=1.0, growth=GROWTH):
-    """Panel boundaries from ``start`` to ``stop``.
+def panel_edges(start, stop, first, breakpoints=(), lo_clip=None, growth=GROWTH):
+    """Panel boundaries from ``start`` (a singular endpoint) to ``stop``.
 
-    The first panel has width ``first``; widths then grow by ``growth`` up to
-    ``max_width``.  Each breakpoint inside (start, stop) becomes a boundary.
+    Widths grow from ``first`` by ``growth`` until they reach 1; unit panels follow on
+    integer edges (so all of them have width exactly 1 and share their nodes' offsets).
+    Each breakpoint inside becomes a boundary.  With ``lo_clip`` above ``start``, the
+    edges below it are dropped and ``lo_clip`` becomes the first edge, without ever
+    building the panels in between.
     """
-    edges = [start]
-    width = first
-    x = start
-    while x < stop:
-        x = min(x + width, stop)
-        edges.append(x)
-        width = min(width * growth, max_width)
-    interior = [p for p in breakpoints if start < p < stop]
-    edges = np.unique(np.concatenate([edges, interior]))
+    graded = [start]
+    width, x = first, start
+    while width < 1.0 and x < stop:
+        x = x + width
+        graded.append(x)
+        width *= growth
+    first_unit = math.ceil(graded[-1] + 0.25)  # leave no sliver before the unit grid
+    if lo_clip is not None and lo_clip > start:
+        first_unit = max(first_unit, math.floor(lo_clip))
+    unit = np.arange(first_unit, math.ceil(stop) + 1, dtype=float)
+    edges = np.concatenate([graded, unit, [p for p in breakpoints if start < p < unit[-1]]])
+    edges = np.unique(edges)
+    if lo_clip is not None and lo_clip > start:
+        edges = np.concatenate([[lo_clip], edges[edges > lo_clip]])
     # Drop slivers created by breakpoints sitting almost on an edge.
-    keep = np.concatenate([[True], np.diff(edges) > 1e-14 * max(1.0, abs(stop))])
+    keep = np.concatenate([[True], np.diff(edges) > 1e-14 * max(1.0, abs(edges[-1]))])
     return edges[keep]
 
 
 def composite_nodes(edges, n=NODES_PER_PANEL):
-    """Nodes and weights on the panels; the first panel uses u = edges[0] + s^2."""
+    """Nodes and weights on the panels; the first panel uses u = edges[0] + s^4.
+
+    The quartic substitution makes the endpoint behaviours met here analytic in s:
+    u^(3/2) (Hertz), a square root (Maugis-Dugdale branch end) and the fourth root at
+    lambda = lambda_c, where the branch end changes kind.
+    """
     x, w = gauss_legendre(n)
     a, b = edges[:-1], edges[1:]
     nodes = (a[:, None] + (b - a)[:, None] * x[None, :])
     weights = (b - a)[:, None] * w[None, :]
-    # First panel: u = a + s^2, s in [0, sqrt(b - a)], du = 2 s ds.
-    h = np.sqrt(b[0] - a[0])
+    # First panel: u = a + s^4, s in [0, (b - a)^(1/4)], du = 4 s^3 ds.
+    h = (b[0] - a[0]) ** 0.25
     s = h * x
-    nodes[0] = a[0] + s * s
-    weights[0] = 2.0 * s * h * w
+    nodes[0] = a[0] + s**4
+    weights[0] = 4.0 * s**3 * h * w
     return nodes.ravel(), weights.ravel()
