@@ -238,3 +238,16 @@ def test_surface_command(capsys, tmp_path):
                  ["surface", str(path), "--material", "Au", "--b", "1nm"]):
         code, _, err = run(capsys, *argv)
         assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_json_has_no_infinity_or_nan(capsys):
+    code, out, _ = run(capsys, "load", *MODEL, "--P", "5e-324,0,1", "--format", "json")
+    assert code == 0
+    rows = json.loads(out)  # strict JSON: Infinity/NaN would not parse back as null
+    assert rows[0]["mu"] is None and rows[1]["mu"] is None and rows[2]["mu"] > 0
+
+
+def test_negative_quantity_is_a_value_not_an_option(capsys):
+    argv = ["separation", *AU[:2], "--sigma", "-2nm", *AU[4:], "--separation", "0nm"]
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and "sigma_s must be > 0" in err

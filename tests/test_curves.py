@@ -190,3 +190,21 @@ def test_results_do_not_depend_on_call_history():
         assert getattr(again, key)[0] == pytest.approx(getattr(first, key)[0], rel=1e-12)
     from scipy.special import ndtr
     assert asperity.separation_curve([9.0], 0.01, 1000).contacts[0] == pytest.approx(ndtr(-9.0), rel=1e-12)
+
+
+@pytest.mark.parametrize("kwargs, needle", [
+    (dict(alpha=True, beta=10.0), "boolean"),
+    (dict(alpha=1e300, beta=10.0, gamma=1e-3), "alpha"),
+    (dict(alpha=0.01, beta=1e-300, gamma=1e-3), "beta"),
+    (dict(alpha=0.01, beta=1000.0, gamma=1e-200), "lambda"),
+    (dict(alpha=0.01, beta=1000.0, gamma=1e-3, h_over_b=1e-300), "lambda"),
+    (dict(alpha=1e-7, beta=10.0, gamma=0.05), "adhesive contact"),
+])
+def test_out_of_range_parameter_combinations(kwargs, needle):
+    with pytest.raises(ValueError, match=needle):
+        asperity.separation_curve([0.0], **kwargs)
+
+
+def test_vanishing_load_gives_infinite_mu_without_warnings():
+    c = asperity.load_curve([5e-324, 1.0], 0.01, 1000, 1e-3)
+    assert np.isinf(c.mu[0]) and np.isfinite(c.mu[1])

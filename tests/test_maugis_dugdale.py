@@ -141,3 +141,16 @@ def test_lambda_from_physical():
 def test_bad_input(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_lambda_range_and_far_jkr():
+    end = md.md_branch_end(1e12)  # far JKR: the scan for the turning point reaches t ~ 1/lam
+    assert end.P == pytest.approx(-5 / 6, rel=1e-9) and end.A == pytest.approx(6 ** (-1 / 3), rel=1e-9)
+    assert md.md_pull_off(1e12, "load").P == pytest.approx(-1.5, rel=1e-9)
+    for lam in (2e12, 1e-13):
+        with pytest.raises(ValueError, match="lam"):
+            md.md_branch_end(lam)
+    with pytest.raises(ValueError, match="scalar"):
+        md.md_solve([0.1], [1.0, 2.0])
+    with pytest.raises(ValueError, match="t = sqrt"):
+        md.md_curve([1e300], 1.0)

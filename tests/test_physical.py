@@ -317,7 +317,7 @@ def test_round_trip_groups_to_physical_to_groups(alpha, beta, gamma, b, E_star, 
     assert c.alpha == pytest.approx(alpha, rel=1e-13)
     assert c.beta == pytest.approx(beta, rel=1e-13)
     assert c.gamma == pytest.approx(gamma, rel=1e-12)
-    assert c.model.params.h_over_b == 1.0  # the paper's h = b
+    assert c.h_over_b == 1.0  # the paper's h = b
 
 
 def test_inverse_conversions_validate_and_vectorise():

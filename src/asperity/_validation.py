@@ -21,6 +21,8 @@ __all__ = [
 
 def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray:
     """Convert ``value`` to a float array; reject NaN, infinity and (by default) emptiness."""
+    if isinstance(value, bool | np.bool_) or getattr(np.asarray(value), "dtype", None) == np.bool_:
+        raise ValueError(f"{name} must be a real number, got a boolean {value!r}")
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):

@@ -24,7 +24,7 @@ from . import groups
 from ._validation import as_float_array, check_nonnegative, check_poisson, check_positive
 from .friction_stress import FrictionLaw, HurtadoKim
 from .hertz import hertz_force, hertz_radius
-from .maugis_dugdale import _curve, md_branch_end, md_solve
+from .maugis_dugdale import LAMBDA_RANGE, _curve, md_branch_end, md_solve
 
 __all__ = ["ModelParameters", "AsperityLaw"]
 
@@ -76,11 +76,35 @@ class ModelParameters:
         return self.gamma > 0.0
 
 
+#: Largest adhesive reach below the asperity tops, in sigma, that the integrals handle.
+U_END_LIMIT = 1.0e4
+
+
+def _check_scales(p: ModelParameters):
+    """Reject parameter sets whose scales overflow or leave the Maugis-Dugdale range."""
+    log_ab2 = np.log10(p.alpha) + 2.0 * np.log10(p.beta)
+    if not (-250.0 < log_ab2 < 250.0 and -100.0 < np.log10(p.beta) < 100.0 and p.alpha < 1e100):
+        raise ValueError(f"alpha={p.alpha:g}, beta={p.beta:g} put the force scale alpha*beta^2 beyond double "
+                         "precision; use physical values (alpha and beta between 1e-100 and 1e100)")
+    if not p.adhesive:
+        return
+    lam = groups.maugis_lambda(p.alpha, p.beta, p.gamma, p.h_over_b)
+    scales = (lam, groups.penetration_scale(p.alpha, p.beta, p.gamma), groups.load_scale(
+        p.alpha, p.beta, p.gamma, p.nu), groups.radius_scale(p.alpha, p.beta, p.gamma))
+    lo, hi = LAMBDA_RANGE
+    if not (all(np.isfinite(x) and x > 0 for x in scales) and lo <= lam <= hi):
+        raise ValueError(f"alpha={p.alpha:g}, beta={p.beta:g}, gamma={p.gamma:g}, h_over_b={p.h_over_b:g} give a "
+                         f"Maugis parameter lambda = {float(lam):.3g} (Eq 15) outside [{lo:g}, {hi:g}]; "
+                         + ("adhesion this weak is negligible: use gamma = 0" if lam < lo
+                            else "check gamma and h_over_b (h is an atomic distance)"))
+
+
 class AsperityLaw:
     """Contact radius and force of one asperity versus its penetration (model units)."""
 
     def __init__(self, params: ModelParameters):
         self.params = p = params
+        _check_scales(p)
         if p.adhesive:
             self.lam = float(groups.maugis_lambda(p.alpha, p.beta, p.gamma, p.h_over_b))
             self.delta_hat = float(groups.penetration_scale(p.alpha, p.beta, p.gamma))
@@ -88,6 +112,12 @@ class AsperityLaw:
             self.A_hat = float(groups.radius_scale(p.alpha, p.beta, p.gamma))
             self.end = md_branch_end(self.lam)
             self.u_end = self.delta_hat * self.end.delta
+            if self.u_end < -U_END_LIMIT:
+                raise ValueError(
+                    f"alpha={p.alpha:g}, beta={p.beta:g}, gamma={p.gamma:g} hold asperities in adhesive contact "
+                    f"{-self.u_end:.3g} sigma below their tops (penetration scale delta_hat = "
+                    f"{self.delta_hat:.3g}); the model handles up to {U_END_LIMIT:g} sigma: raise alpha or "
+                    "beta, or lower gamma")
             # Maugis-Dugdale varies on Delta ~ 1, and near the branch end on |Delta_end|.
             self.scale = self.delta_hat * min(1.0, abs(self.end.delta))
         else:

@@ -183,9 +183,17 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 # -- output ------------------------------------------------------------------------------
+def _json_value(v):
+    """JSON has no NaN or infinity: they become null."""
+    if isinstance(v, float | np.floating) and not math.isfinite(v):
+        return None
+    return v
+
+
 def _format_rows(rows: list[dict], fmt: str) -> str:
     if fmt == "json":
-        return json.dumps(rows, indent=1, allow_nan=True).replace("NaN", "null") + "\n"
+        clean = [{k: _json_value(v) for k, v in row.items()} for row in rows]
+        return json.dumps(clean, indent=1, allow_nan=False) + "\n"
     names = list(rows[0]) if rows else []
     if fmt == "csv":
         lines = [",".join(names)] + [",".join(_csv(r[n]) for n in names) for r in rows]
@@ -371,7 +379,7 @@ def cmd_pulloff(args):
         row = {"pull_off": po.force, "d": po.d}
     fmt = _fmt(args)
     if fmt == "json":
-        text = json.dumps({k: None if math.isnan(v) else v for k, v in row.items()}) + "\n"
+        text = json.dumps({k: _json_value(v) for k, v in row.items()}, allow_nan=False) + "\n"
     else:
         text = _format_rows([row], fmt)
     _emit(text, args)
@@ -456,16 +464,13 @@ COMMANDS = {"separation": cmd_separation, "load": cmd_load, "pulloff": cmd_pullo
             "reproduce": cmd_reproduce, "materials": cmd_materials, "surface": cmd_surface}
 
 
-_LIST_OPTIONS = ("--d", "--P", "--delta", "--separation", "--load")
-
-
 def _join_negative_lists(argv):
     """``--d -1,0,2`` -> ``--d=-1,0,2``: argparse would take ``-1,0,2`` for an option."""
     out = list(argv)
     i = 0
     while i < len(out) - 1:
         nxt = out[i + 1]
-        if out[i] in _LIST_OPTIONS and nxt[:1] == "-" and nxt[1:2] in tuple("0123456789."):
+        if out[i].startswith("--") and "=" not in out[i] and nxt[:1] == "-" and nxt[1:2] in tuple("0123456789."):
             out[i:i + 2] = [f"{out[i]}={nxt}"]
         i += 1
     return out

@@ -287,7 +287,7 @@ class Model:
         j = np.clip(np.argmax(below, axis=1), 1, n - 1)
         a, b = grid[j - 1].copy(), grid[j].copy()
         nonzero = np.abs(P[P != 0])
-        s = 1e-3 * (nonzero.min() if nonzero.size else max(np.abs(Pg).max(), 1e-300))
+        s = max(1e-3 * (nonzero.min() if nonzero.size else np.abs(Pg).max()), 1e-300)
         y = np.arcsinh(P / s)
         ya, yb = np.arcsinh(Pg[j - 1] / s), np.arcsinh(Pg[j] / s)
         h = b - a

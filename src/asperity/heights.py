@@ -158,6 +158,8 @@ class Gaussian(HeightDistribution):
             :math:`k > -1` (0: contact fraction, 1: area, 3/2: Hertz load).
         """
         d = as_float_array(d, "d", allow_empty=True)
+        if np.any(d < -35.0):
+            raise ValueError("d must be >= -35 for the parabolic-cylinder form (it overflows below)")
         k = float(order)
         if not k > -1:
             raise ValueError(f"order must be > -1, got {order!r}")

@@ -40,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize
 
-from ._validation import as_float_array, check_positive
+from ._validation import as_float_array, check_positive, scalar
 
 __all__ = [
     "LAMBDA_C",
@@ -53,6 +53,8 @@ __all__ = [
     "md_solve",
     "md_pull_off",
     "md_lambda",
+    "LAMBDA_RANGE",
+    "check_lambda",
 ]
 
 # Coefficients of the series t + (t^2 - 1) atan t = sum_k (-1)^(k+1) 4k t^(2k+1)/((2k-1)(2k+1)).
@@ -100,12 +102,28 @@ def _radius_from_brackets(lam, f1, f2):
     return 2.0 / (a1 + np.sqrt(a1 * a1 + 4.0 * a2)), a1, a2
 
 
+#: Range of the Maugis parameter handled (DMT and JKR are within 1e-6 of their limits far inside).
+LAMBDA_RANGE = (1e-12, 1e12)
+#: Range of t = sqrt(m^2 - 1) handled without overflow.
+T_RANGE = (1e-100, 1e100)
+
+
+def check_lambda(lam):
+    """The Maugis parameter as a float array within :data:`LAMBDA_RANGE`."""
+    lam = check_positive(lam, "lam")
+    lo, hi = LAMBDA_RANGE
+    if np.any((lam < lo) | (lam > hi)):
+        raise ValueError(f"lam (Maugis parameter) must lie in [{lo:g}, {hi:g}] (use asperity.dmt below and "
+                         f"asperity.jkr above), got {lam!r}")
+    return lam
+
+
 def _check_t_lam(t, lam):
     t = as_float_array(t, "t", allow_empty=True)
-    if np.any(t <= 0):
-        raise ValueError("t = sqrt(m^2 - 1) must be > 0 (valid range 0 < t < inf)")
-    lam = check_positive(lam, "lam")
-    return t, lam
+    lo, hi = T_RANGE
+    if np.any((t < lo) | (t > hi)):
+        raise ValueError(f"t = sqrt(m^2 - 1) must lie in [{lo:g}, {hi:g}]")
+    return t, check_lambda(lam)
 
 
 def md_radius(t, lam):
@@ -212,8 +230,9 @@ class BranchPoint:
     delta: float
 
 
-def _first_sign_change(func, lam, lo=-12.0, hi=16.0, n=400):
+def _first_sign_change(func, lam, hi=16.0, n=400):
     """log10 t of the first change of func(t) from < 0 to >= 0, or None."""
+    lo = min(-12.0, np.log10(1e-3 / lam))  # JKR-like curves turn at t ~ 1/lam
     s = np.linspace(lo, hi, n)
     vals = func(10.0**s)
     idx = np.flatnonzero(vals >= 0)
@@ -263,7 +282,7 @@ def md_branch_end(lam) -> BranchPoint:
     ----------
     Maugis (1992); Johnson & Greenwood (1997).
     """
-    lam = float(check_positive(lam, "lam"))
+    lam = float(check_lambda(scalar(lam, "lam")))
     return _branch_end(lam)
 
 
@@ -290,7 +309,7 @@ def md_solve(delta, lam):
     ----------
     Maugis (1992); Adams et al., Eqs (11)-(13).
     """
-    lam = float(check_positive(lam, "lam"))
+    lam = float(check_lambda(scalar(lam, "lam")))
     delta = as_float_array(delta, "delta", allow_empty=True)
     end = _branch_end(lam)
     if np.any(delta < end.delta):
@@ -379,7 +398,7 @@ def md_pull_off(lam, control: str = "load") -> BranchPoint:
     ----------
     Maugis (1992), Johnson & Greenwood (1997).
     """
-    lam = float(check_positive(lam, "lam"))
+    lam = float(check_lambda(scalar(lam, "lam")))
     if control == "displacement":
         return _branch_end(lam)
     if control != "load":

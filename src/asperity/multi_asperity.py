@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array
+from ._validation import as_float_array, check_poisson
 from .asperity_law import AsperityLaw, ModelParameters
 from .heights import GAUSSIAN, HeightDistribution
 from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
@@ -265,6 +265,7 @@ def mean_pressure(P, area, nu=0.3):
     """
     P = np.asarray(P, dtype=float)
     area = np.asarray(area, dtype=float)
+    nu = check_poisson(nu)
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(area > 0, P * (1.0 - nu) / (2.0 * np.pi * np.where(area > 0, area, 1.0)),
                         np.nan)
@@ -278,4 +279,5 @@ def friction_coefficient(F, P):
     """
     F = np.asarray(F, dtype=float)
     P = np.asarray(P, dtype=float)
-    return np.where(P > 0, F / np.where(P > 0, P, 1.0), np.nan)
+    with np.errstate(over="ignore"):  # a finite friction over a vanishing load: mu = inf
+        return np.where(P > 0, F / np.where(P > 0, P, 1.0), np.nan)
