@@ -251,3 +251,12 @@ def test_negative_quantity_is_a_value_not_an_option(capsys):
     argv = ["separation", *AU[:2], "--sigma", "-2nm", *AU[4:], "--separation", "0nm"]
     code, _, err = run(capsys, *argv)
     assert code == 2 and "sigma_s must be > 0" in err
+
+
+def test_note_when_real_area_approaches_nominal(capsys):
+    argv = ["load", "--material", "Au", "--sigma", "5nm", "--radius", "0.8um", "--density", "2e13/m^2",
+            "--area", "1mm^2", "--load", "1N,1e5N", "--format", "csv"]
+    code, out, err = run(capsys, *argv)
+    rows = rows_of(out)
+    assert code == 0 and float(rows[1]["area_m2"]) > 0.1e-6
+    assert "note:" in err and "nominal" in err

@@ -356,6 +356,9 @@ def _run_curve(args, kind: str):
         values = parse_list(text, log=log, name=names[0])
         curve = getattr(_model(args), f"{kind}_curve")(values)
     _emit(_format_rows(_curve_rows(curve), _fmt(args)), args)
+    if physical and np.nanmax(curve.area_fraction) > 0.1:
+        print(f"asperity: note: the real contact area reaches {np.nanmax(curve.area_fraction):.0%} of the nominal "
+              "area; the GW model (independent asperities) is unreliable there", file=sys.stderr)
     if args.plot:
         _plot(curve, args.plot, "d" if kind == "separation" else "P", _title(args), physical)
 

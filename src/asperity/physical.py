@@ -152,6 +152,13 @@ class PhysicalCurve:
     contacts: np.ndarray
     dimensionless: CurveResult = field(repr=False, compare=False)
     parameters: dict = field(default_factory=dict, compare=False)
+    nominal_area: float = math.nan
+
+    @property
+    def area_fraction(self) -> np.ndarray:
+        """Real over nominal contact area.  The GW model (independent asperities) needs it
+        well below 1; above ~0.1 neighbouring contacts interact and the results degrade."""
+        return self.area / self.nominal_area
 
     def __len__(self) -> int:
         return int(np.size(self.d))
@@ -371,7 +378,8 @@ class PhysicalContact:
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
         return PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,
                              mu=curve.mu, area=area, pressure=pressure, contacts=curve.contacts * self.N,
-                             dimensionless=curve, parameters=self.parameters())
+                             dimensionless=curve, parameters=self.parameters(),
+                             nominal_area=self.surface.area)
 
 
 def _as_material(body) -> Material:

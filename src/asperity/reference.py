@@ -52,9 +52,13 @@ from __future__ import annotations
 import functools
 import math
 
-import mpmath
 import numpy as np
 from scipy import integrate, optimize
+
+try:
+    import mpmath
+except ImportError:  # pragma: no cover - depends on the environment
+    raise ImportError("asperity.reference needs mpmath: pip install 'asperity[reference]'") from None
 
 __all__ = [
     "conversion_factors",
