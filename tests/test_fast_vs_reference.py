@@ -19,6 +19,8 @@ CASES = [
     ((0.1, 1e5, 1e-3), (1.0, 5.0)),
     ((3e-3, 300.0, 3e-2), (-2.5, 2.0)),
     ((0.02, 50.0, 2e-2), (0.0, 2.0)),  # lambda above lambda_c: interior branch end
+    ((0.3, 30.0, 0.0759), (0.0, 3.5)),  # lambda = lambda_c to 1e-4: fourth-root branch end
+    ((0.3, 10.0, 0.1315), (5.0,)),
 ]
 
 
