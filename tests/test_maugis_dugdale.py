@@ -154,3 +154,9 @@ def test_lambda_range_and_far_jkr():
         md.md_solve([0.1], [1.0, 2.0])
     with pytest.raises(ValueError, match="t = sqrt"):
         md.md_curve([1e300], 1.0)
+
+
+@given(st.floats(1e-10, 1e10), st.floats(1e-6, 1e6))
+def test_radius_inverse(lam, A):
+    t = md._t_of_radius(np.array([A]), lam)
+    assert md.md_radius(t, lam)[0] == pytest.approx(A, rel=1e-12)

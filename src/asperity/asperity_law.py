@@ -18,13 +18,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import optimize
 
 from . import groups
 from ._validation import as_float_array, check_nonnegative, check_poisson, check_positive
 from .friction_stress import FrictionLaw, HurtadoKim
 from .hertz import hertz_force, hertz_radius
-from .maugis_dugdale import LAMBDA_RANGE, _curve, md_branch_end, md_solve
+from .maugis_dugdale import LAMBDA_RANGE, _curve, _t_of_radius, md_branch_end, md_solve
 
 __all__ = ["ModelParameters", "AsperityLaw"]
 
@@ -129,24 +128,15 @@ class AsperityLaw:
     def _friction_breakpoints(self) -> tuple[float, ...]:
         """Penetrations where the contact radius crosses the friction law's breakpoints."""
         p = self.params
-        out = []
-        for a_k in p.friction.breakpoints():
-            if not p.adhesive:
-                out.append((a_k / p.beta) ** 2)
-                continue
-            target = a_k * self.A_hat
-            if target <= self.end.A:
-                continue  # the whole stable branch lies above this radius
-            # A(t) decreases along the curve: find t with A(t) = target, in log10 t.
-            f = lambda s, target=target: np.log(_curve(10.0**s, self.lam)[0] / target)  # noqa: E731
-            lo, hi = -20.0, 20.0 if np.isinf(self.end.t) else np.log10(self.end.t)
-            while f(lo) < 0:
-                lo -= 10.0
-            while np.isinf(self.end.t) and f(hi) > 0:
-                hi += 10.0
-            s = optimize.brentq(f, lo, hi, xtol=1e-15)
-            out.append(self.delta_hat * float(_curve(10.0**s, self.lam)[2]))
-        return tuple(sorted(out))
+        radii = np.asarray(p.friction.breakpoints(), dtype=float)
+        if not p.adhesive:
+            return tuple(sorted((radii / p.beta) ** 2))
+        targets = radii * self.A_hat
+        targets = targets[targets > self.end.A]  # radii below the branch end never occur
+        if targets.size == 0:
+            return ()
+        t = _t_of_radius(targets, self.lam)
+        return tuple(sorted(self.delta_hat * _curve(t, self.lam)[2]))
 
     def evaluate(self, u_bar):
         """Contact radius :math:`\\bar a` and force :math:`P/(Gb^2)` at penetrations ``u_bar``.

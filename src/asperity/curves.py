@@ -183,13 +183,16 @@ class Model:
             self._pull_off[d_max] = self._find_pull_off(d_max)
         return self._pull_off[d_max]
 
-    def _find_pull_off(self, d_max: float) -> PullOff:
+    def _find_pull_off(self, d_max: float, grid=None, P=None) -> PullOff:
+        """Most tensile force on [-3, d_max]: a grid (or the caller's, if it covers that range)
+        locates the minimum, Newton on dP/dd = 0 refines it."""
         if not self.params.adhesive:
             return PullOff(0.0, math.nan, False)
-        d_lo = -3.0
-        tab = self.tabulation(d_lo, d_max)
-        grid = np.linspace(d_lo, d_max, int(min(4000, round((d_max - d_lo) / 0.02))) + 1)
-        P = tab.sums(grid)[0][:, 1]
+        if grid is None:
+            d_lo = -3.0
+            grid = np.linspace(d_lo, d_max, int(min(4000, round((d_max - d_lo) / 0.02))) + 1)
+            P = self.tabulation(d_lo, d_max).sums(grid)[0][:, 1]
+        tab = self.tabulation(float(grid[0]), d_max)
         i = int(np.argmin(P))
         if P[i] >= 0.0:
             return PullOff(0.0, math.nan, False)
@@ -232,8 +235,10 @@ class Model:
         tab = self.tabulation(d_lo, d_hi)
         grid, Pg, dPg = self._grid(tab, d_lo, d_hi)
         i = int(np.argmin(Pg))
-        if Pg[i] < 0:  # a pull-off force exists: the branch ends there
-            po = self.pull_off(d_hi)
+        if Pg[i] < 0:  # a pull-off force exists: the branch ends there; this grid locates it
+            if d_hi not in self._pull_off:
+                self._pull_off[d_hi] = self._find_pull_off(d_hi, grid, Pg)
+            po = self._pull_off[d_hi]
             floor = -po.force
             grid, Pg, dPg = np.append(grid[:i], po.d), np.append(Pg[:i], floor), np.append(dPg[:i], 0.0)
         else:
@@ -254,7 +259,7 @@ class Model:
     @staticmethod
     def _grid(tab, d_lo, d_hi, n=None):
         """Separations from d_lo to d_hi with the force and its derivative there."""
-        n = int(np.clip((d_hi - d_lo) / 0.035, 100, 800)) if n is None else n
+        n = int(np.clip((d_hi - d_lo) / 0.05, 100, 800)) if n is None else n
         grid = np.linspace(d_lo, d_hi, n)
         g0, g1 = tab.sums(grid, order=1)
         return grid, g0[:, 1], g1[:, 1]

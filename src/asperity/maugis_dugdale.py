@@ -377,6 +377,33 @@ def _invert_penetration(delta, lam, end):
     return out.reshape(delta.shape)
 
 
+def _t_of_radius(A, lam):
+    """t with md_radius(t, lam) = A, vectorized: Eq (11) at fixed A is increasing in t."""
+    A = np.asarray(A, dtype=float)
+    c2, c1 = 0.5 * lam * A * A, (4.0 / 3.0) * lam * lam * A
+    a = np.full_like(A, np.log10(T_RANGE[0]))
+    b = np.full_like(A, np.log10(T_RANGE[1]))
+    # Start from the asymptotes: t << 1 (f1 ~ 4t^3/3, f2 ~ t^2/2), t >> 1 (f1 ~ pi t^2/2,
+    # f2 ~ (pi/2 - 1) t); the smaller root is the better one.
+    small = np.minimum(np.cbrt(0.75 / c2), np.sqrt(2.0 / c1))
+    q2, q1 = 0.5 * np.pi * c2, (0.5 * np.pi - 1.0) * c1
+    large = 2.0 / (q1 + np.sqrt(q1 * q1 + 4.0 * q2))
+    s = np.log10(np.where(small < 1.0, small, large))
+    for _ in range(200):
+        t = 10.0**s
+        f1, f2, _, df1, df2, _ = _brackets(t)
+        g = c2 * f1 + c1 * f2 - 1.0
+        a, b = np.where(g < 0, s, a), np.where(g > 0, s, b)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s_new = s - g / ((c2 * df1 + c1 * df2) * t * np.log(10.0))
+        bad = ~np.isfinite(s_new) | (s_new < a) | (s_new > b)
+        s_new = np.where(bad, 0.5 * (a + b), s_new)
+        if np.all(np.abs(s_new - s) <= 1e-13 * np.maximum(1.0, np.abs(s))):
+            return 10.0**s_new
+        s = s_new
+    return 10.0**s  # pragma: no cover - bisection converges well within 200 steps
+
+
 def md_pull_off(lam, control: str = "load") -> BranchPoint:
     r"""Pull-off point of one Maugis-Dugdale asperity.
 
