@@ -1,4 +1,4 @@
-"""CSV output shared by the result objects (dimensionless and physical curves)."""
+"""Table output shared by the result objects (dimensionless and physical curves)."""
 
 from __future__ import annotations
 
@@ -27,3 +27,14 @@ def columns_to_csv(columns: dict[str, np.ndarray], path_or_buffer=None) -> str |
         with open(path_or_buffer, "w", encoding="utf-8") as fh:
             fh.write(text)
     return None
+
+
+def columns_to_dataframe(columns: dict[str, np.ndarray], attrs: dict):
+    """Named columns as a :class:`pandas.DataFrame` with ``attrs`` (needs ``asperity[frame]``)."""
+    try:
+        import pandas as pd
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise ImportError("to_dataframe needs pandas: pip install 'asperity[frame]'") from None
+    frame = pd.DataFrame(columns)
+    frame.attrs.update(attrs)
+    return frame

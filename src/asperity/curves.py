@@ -18,7 +18,7 @@ from dataclasses import asdict, dataclass, field
 
 import numpy as np
 
-from ._csv import columns_to_csv
+from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import as_float_array
 from ._validation import scalar as _scalar
 from .asperity_law import AsperityLaw, ModelParameters
@@ -68,13 +68,7 @@ class CurveResult:
 
     def to_dataframe(self):
         """The curve as a :class:`pandas.DataFrame` (needs pandas: ``asperity[frame]``)."""
-        try:
-            import pandas as pd
-        except ImportError:  # pragma: no cover - depends on the environment
-            raise ImportError("to_dataframe needs pandas: pip install 'asperity[frame]'") from None
-        frame = pd.DataFrame(self.columns())
-        frame.attrs.update(self.parameters)
-        return frame
+        return columns_to_dataframe(self.columns(), self.parameters)
 
     def to_csv(self, path_or_buffer=None) -> str | None:
         """Write CSV (a header line of column names, then rows); return it if no path."""

@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import groups
-from ._csv import columns_to_csv
+from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import as_float_array, check_nonnegative, check_positive
 from .curves import CurveResult, Model, PullOff
 from .friction_stress import ConstantShear, FrictionLaw
@@ -169,14 +169,8 @@ class PhysicalCurve:
 
     def to_dataframe(self):
         """The curve as a :class:`pandas.DataFrame` (needs pandas); units in ``attrs['units']``."""
-        try:
-            import pandas as pd
-        except ImportError:  # pragma: no cover - depends on the environment
-            raise ImportError("to_dataframe needs pandas: pip install 'asperity[frame]'") from None
-        frame = pd.DataFrame(self.columns())
-        frame.attrs.update(self.parameters)
-        frame.attrs["units"] = {col: unit for col, unit, _ in PHYSICAL_COLUMNS.values()}
-        return frame
+        units = {col: unit for col, unit, _ in PHYSICAL_COLUMNS.values()}
+        return columns_to_dataframe(self.columns(), {**self.parameters, "units": units})
 
     def to_csv(self, path_or_buffer=None) -> str | None:
         """Write CSV (header of column names with units, e.g. ``d_m,P_N,...``); return it if no path."""

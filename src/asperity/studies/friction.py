@@ -131,16 +131,22 @@ def fig4_data() -> FigureData:
 @drawing
 def fig4_draw(data: FigureData):
     """Fig 4: alpha*mu against P/alpha for several alpha, with the no-adhesion curve dashed."""
+    return _draw_family(data, "P_over_alpha", "alpha_mu", r"scaled normal load  $\bar P/\alpha$,  $\bar P = P/NGb^2$",
+                        r"scaled friction coefficient  $\alpha\mu$", FIG4_X, params_text(beta=BETA0, gamma=GAMMA0))
+
+
+def _draw_family(data: FigureData, x: str, y: str, xlabel: str, ylabel: str, xs, legend_title: str):
+    """A log-log family of adhesive curves in colour and the no-adhesion baseline dashed."""
     fig, ax = new_figure()
     colours = iter(COLOURS)
     for s in data.series:
         style = {"color": next(colours)} if s.adhesion else {"color": "0.25", "ls": "--", "lw": 1.8}
-        ax.loglog(s.column("P_over_alpha"), s.column("alpha_mu"), label=s.label, **style)
-    ax.set_xlabel(r"scaled normal load  $\bar P/\alpha$,  $\bar P = P/NGb^2$")
-    ax.set_ylabel(r"scaled friction coefficient  $\alpha\mu$")
-    ax.set_xlim(FIG4_X[0], FIG4_X[-1])
-    ax.set_ylim(*log_decades_limits([s.column("alpha_mu") for s in data.series], 0.15))
-    ax.legend(title=params_text(beta=BETA0, gamma=GAMMA0), loc="upper right")
+        ax.loglog(s.column(x), s.column(y), label=s.label, **style)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_xlim(xs[0], xs[-1])
+    ax.set_ylim(*log_decades_limits([s.column(y) for s in data.series], 0.15))
+    ax.legend(title=legend_title, loc="upper right")
     return fig
 
 
@@ -306,17 +312,8 @@ def fig6_data() -> FigureData:
 @drawing
 def fig6_draw(data: FigureData):
     """Fig 6: mu against P for several gamma, with the no-adhesion baseline dashed."""
-    fig, ax = new_figure()
-    colours = iter(COLOURS)
-    for s in data.series:
-        style = {"color": next(colours)} if s.adhesion else {"color": "0.25", "ls": "--", "lw": 1.8}
-        ax.loglog(s.column("P"), s.column("mu"), label=s.label, **style)
-    ax.set_xlabel(r"normal load  $\bar P = P/NGb^2$")
-    ax.set_ylabel(r"friction coefficient  $\mu$")
-    ax.set_xlim(FIG6_P[0], FIG6_P[-1])
-    ax.set_ylim(*log_decades_limits([s.column("mu") for s in data.series], 0.15))
-    ax.legend(title=params_text(alpha=ALPHA0, beta=BETA0), loc="upper right")
-    return fig
+    return _draw_family(data, "P", "mu", r"normal load  $\bar P = P/NGb^2$", r"friction coefficient  $\mu$",
+                        FIG6_P, params_text(alpha=ALPHA0, beta=BETA0))
 
 
 def fig6_checks(data: FigureData) -> list[Check]:
