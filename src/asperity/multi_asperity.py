@@ -50,7 +50,7 @@ D_MIN, D_MAX = -1.0e4, 30.0
 
 # Column order of the tabulated integrands.
 _COLUMNS = ("contacts", "P", "F", "area")
-_BLOCK_SPAN = 8.0  # separations (in sigma) summed together
+_BLOCK_SPAN = 24.0  # separations (in sigma) summed together
 _BLOCK_ROWS = 2000  # and at most this many at once, to bound memory
 
 
