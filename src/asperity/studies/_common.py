@@ -275,6 +275,23 @@ def log_ticks(ax) -> None:
         axis.set_minor_formatter(NullFormatter())
 
 
+def paired_curves(ax, data: FigureData, x: str, y: str, colour_of: Callable) -> None:
+    """Log-log curves in pairs: solid with adhesion, dashed without, one colour per pair."""
+    for s in data.series:
+        ax.loglog(s.column(x), s.column(y), color=colour_of(s), ls="-" if s.adhesion else "--",
+                  label=s.label if s.adhesion else None)
+
+
+def adhesion_legend(ax, gamma: float, **kwargs) -> None:
+    """The curves' legend plus two style entries: solid = with adhesion, dashed = without."""
+    from matplotlib.lines import Line2D
+
+    handles, labels = ax.get_legend_handles_labels()
+    handles += [Line2D([], [], color="0.3", ls="-"), Line2D([], [], color="0.3", ls="--")]
+    labels += ["with adhesion, " + params_text(gamma=gamma), "without adhesion, γ = 0"]
+    ax.legend(handles, labels, **kwargs)
+
+
 def log_decades_limits(values, pad: float = 0.15) -> tuple[float, float]:
     """Log-axis limits around the positive finite numbers in ``values`` (a list of arrays),
     padded by ``pad`` decades."""

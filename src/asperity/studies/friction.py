@@ -14,10 +14,12 @@ from ._common import (
     COLOURS,
     Check,
     FigureData,
+    adhesion_legend,
     drawing,
     load_series,
     log_decades_limits,
     new_figure,
+    paired_curves,
     params_text,
     ratio_text,
 )
@@ -221,21 +223,14 @@ def fig5_data() -> FigureData:
 @drawing
 def fig5_draw(data: FigureData):
     """Fig 5: alpha*mu against P/alpha for several beta; solid with adhesion, dashed without."""
-    from matplotlib.lines import Line2D
-
     fig, ax = new_figure()
-    colour = {b: c for b, c in zip(FIG5_BETAS, COLOURS, strict=False)}
-    for s in data.series:
-        ax.loglog(s.column("P_over_alpha"), s.column("alpha_mu"), color=colour[s.beta],
-                  ls="-" if s.adhesion else "--", label=s.label if s.adhesion else None)
+    colour = dict(zip(FIG5_BETAS, COLOURS, strict=False))
+    paired_curves(ax, data, "P_over_alpha", "alpha_mu", lambda s: colour[s.beta])
     ax.set_xlabel(r"scaled normal load  $\bar P/\alpha$,  $\bar P = P/NGb^2$")
     ax.set_ylabel(r"scaled friction coefficient  $\alpha\mu$")
     ax.set_xlim(FIG5_X[0], FIG5_X[-1])
     ax.set_ylim(*log_decades_limits([s.column("alpha_mu") for s in data.series], 0.15))
-    handles, labels = ax.get_legend_handles_labels()
-    handles += [Line2D([], [], color="0.3", ls="-"), Line2D([], [], color="0.3", ls="--")]
-    labels += ["with adhesion, " + params_text(gamma=GAMMA0), "without adhesion, γ = 0"]
-    ax.legend(handles, labels, title=params_text(alpha=ALPHA0), loc="upper right")
+    adhesion_legend(ax, GAMMA0, title=params_text(alpha=ALPHA0), loc="upper right")
     return fig
 
 

@@ -10,7 +10,18 @@ import math
 
 import numpy as np
 
-from ._common import COLOURS, Check, FigureData, drawing, load_series, log_decades_limits, new_figure, params_text
+from ._common import (
+    COLOURS,
+    Check,
+    FigureData,
+    adhesion_legend,
+    drawing,
+    load_series,
+    log_decades_limits,
+    new_figure,
+    paired_curves,
+    params_text,
+)
 from .separation import CASES, CASES_PARAMETERS, GAMMA
 
 __all__ = ["fig9_data", "fig9_draw", "fig9_checks"]
@@ -39,21 +50,14 @@ def fig9_data() -> FigureData:
 @drawing
 def fig9_draw(data: FigureData):
     """Fig 9: P/(E* A) against P, log-log; solid with adhesion, dashed without."""
-    from matplotlib.lines import Line2D
-
     fig, ax = new_figure()
-    colour = {case: c for case, c in zip(CASES, COLOURS, strict=False)}
-    for s in data.series:
-        ax.loglog(s.column("P"), s.column("pressure"), color=colour[(s.alpha, s.beta)],
-                  ls="-" if s.adhesion else "--", label=s.label if s.adhesion else None)
+    colour = dict(zip(CASES, COLOURS, strict=False))
+    paired_curves(ax, data, "P", "pressure", lambda s: colour[(s.alpha, s.beta)])
     ax.set_xlabel(r"normal load  $\bar P = P/NGb^2$")
     ax.set_ylabel(r"mean contact pressure  $P/E^*A$")
     ax.set_xlim(FIG9_P[0], FIG9_P[-1])
     ax.set_ylim(*log_decades_limits([s.column("pressure") for s in data.series], 0.1))
-    handles, labels = ax.get_legend_handles_labels()
-    handles += [Line2D([], [], color="0.3", ls="-"), Line2D([], [], color="0.3", ls="--")]
-    labels += ["with adhesion, " + params_text(gamma=GAMMA), "without adhesion, γ = 0"]
-    ax.legend(handles, labels, loc="lower right")
+    adhesion_legend(ax, GAMMA, loc="lower right")
     return fig
 
 
