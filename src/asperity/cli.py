@@ -19,6 +19,7 @@ from ._version import __version__
 from .curves import COLUMNS, Model
 from .maugis_dugdale import md_branch_end, md_pull_off, md_solve
 from .physical import PHYSICAL_COLUMNS
+from .quantities import MODEL_PARAMETERS
 
 __all__ = ["main"]
 
@@ -26,13 +27,7 @@ UNITS = ("\n".join(f"  {name:9s} {meaning}" for name, meaning in COLUMNS.items()
          + "\nWith --material (SI):\n"
          + "\n".join(f"  {col:11s} [{unit}] {meaning}" for col, unit, meaning in PHYSICAL_COLUMNS.values()))
 
-MODEL_HELP = {
-    "alpha": "surface roughness parameter (sigma/R)^(1/2) > 0 (Eq 7)",
-    "beta": "friction regime parameter (R sigma)^(1/2)/b > 0 (Eq 7)",
-    "gamma": "adhesion parameter w/(E* b) >= 0 (Eq 16); 0 = no adhesion (Hertz)",
-    "nu": "Poisson's ratio, -1 < nu < 0.5 (default 0.3; the paper does not state it)",
-    "h_over_b": "Dugdale range over Burgers vector h/b > 0 (Eq 15; default 1 as in the paper)",
-}
+MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", "gamma", "nu", "h_over_b")}
 
 
 class UsageError(Exception):
@@ -75,7 +70,7 @@ def _model_args(p: argparse.ArgumentParser):
     g = p.add_argument_group("model parameters (dimensionless), or a physical contact below")
     g.add_argument("--alpha", type=float, help=MODEL_HELP["alpha"])
     g.add_argument("--beta", type=float, help=MODEL_HELP["beta"])
-    g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"] + " (default 0)")
+    g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
     g.add_argument("--nu", type=float, default=None, help=MODEL_HELP["nu"])
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=1.0, help=MODEL_HELP["h_over_b"])
     ph = p.add_argument_group(

@@ -31,19 +31,12 @@ from .multi_asperity import (
     friction_coefficient,
     mean_pressure,
 )
+from .quantities import CURVE_COLUMNS
 
 __all__ = ["CurveResult", "PullOff", "Model", "separation_curve", "load_curve", "pull_off"]
 
-#: Columns of a curve, in order, with their meaning (used by CSV, JSON and --help).
-COLUMNS = {
-    "d": "separation d/sigma",
-    "P": "normal force P/(N G b^2), compressive > 0",
-    "F": "friction force F/(N G b^2)",
-    "mu": "friction coefficient F/P (NaN where P <= 0)",
-    "area": "real contact area A/(N pi b^2)",
-    "pressure": "mean contact pressure P/(E* A) (NaN without contact)",
-    "contacts": "fraction of asperities in contact n/N",
-}
+#: Columns of a curve, in order, with their meaning (derived from :data:`asperity.quantities.CURVE_COLUMNS`).
+COLUMNS = {name: q.meaning for name, q in CURVE_COLUMNS.items()}
 
 
 @dataclass(frozen=True)

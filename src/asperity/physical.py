@@ -45,6 +45,7 @@ from .heights import GAUSSIAN, HeightDistribution
 from .materials import Material, material
 from .maugis_dugdale import md_lambda
 from .multi_asperity import D_MAX, D_MIN
+from .quantities import CURVE_COLUMNS
 from .units import to_si
 
 __all__ = [
@@ -61,16 +62,9 @@ __all__ = [
     "fuller_tabor_parameter",
 ]
 
-#: Columns of a :class:`PhysicalCurve`: attribute -> (CSV/DataFrame column, SI unit, meaning).
-PHYSICAL_COLUMNS = {
-    "d": ("d_m", "m", "separation of the flat from the mean summit height"),
-    "P": ("P_N", "N", "total normal force, compressive > 0"),
-    "F": ("F_N", "N", "total friction force"),
-    "mu": ("mu", "1", "friction coefficient F/P (NaN where P <= 0)"),
-    "area": ("area_m2", "m^2", "real contact area"),
-    "pressure": ("pressure_Pa", "Pa", "mean pressure over the real contact area, P/area (NaN without contact)"),
-    "contacts": ("contacts", "1", "number of asperities in contact"),
-}
+#: Columns of a :class:`PhysicalCurve`: attribute -> (CSV/DataFrame column, SI unit, meaning),
+#: derived from :data:`asperity.quantities.CURVE_COLUMNS`.
+PHYSICAL_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in CURVE_COLUMNS.items()}
 
 
 def _out(x):

@@ -1,0 +1,176 @@
+r"""One registry of the model's quantities: names, symbols, meanings, units and valid ranges.
+
+Every place that names a quantity derives it from here: the columns of a curve
+(:data:`asperity.curves.COLUMNS`), the SI columns of a physical curve
+(:data:`asperity.physical.PHYSICAL_COLUMNS`), the command line's help, the explorer's
+sliders and axis labels, a sweep's xarray attributes and a fit's parameter bounds.
+
+A :class:`Quantity` carries
+
+* ``name``: the Python name, keyword argument and dimensionless column (``'alpha'``, ``'P'``);
+* ``symbol``: LaTeX, without dollars (``r'\alpha'``);
+* ``meaning``: one line, with the dimensionless unit where there is one;
+* ``unit``: the dimensionless unit (``'1'``, ``'sigma'``, ``'N G b^2'``, ...);
+* ``si_name``, ``si_unit``, ``si_meaning``: the SI column (``'P_N'``), unit (``'N'``) and
+  meaning, for quantities that have a physical form;
+* the valid range (``lo``, ``hi``, whether each end is included), ``log`` (spans decades:
+  log axes, log sliders, fitted in log10), a ``typical`` range for sliders and sweeps,
+  the ``default`` and the ``source`` (equation of the paper, or reference).
+
+Three registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
+:class:`asperity.Model`), :data:`PHYSICAL_PARAMETERS` (inputs of a physical contact, in SI
+units) and :data:`CURVE_COLUMNS` (the columns of every curve).  :func:`quantity` looks a
+name up in all three.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+__all__ = [
+    "Quantity",
+    "MODEL_PARAMETERS",
+    "PHYSICAL_PARAMETERS",
+    "CURVE_COLUMNS",
+    "quantity",
+]
+
+_INF = math.inf
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A named quantity of the model with its units and valid range (see the module docstring)."""
+
+    name: str
+    symbol: str
+    meaning: str
+    unit: str = "1"
+    si_name: str | None = None
+    si_unit: str | None = None
+    si_meaning: str | None = None
+    lo: float = -_INF
+    hi: float = _INF
+    lo_inclusive: bool = False
+    hi_inclusive: bool = False
+    log: bool = False
+    typical: tuple[float, float] | None = None
+    default: float | None = None
+    source: str = ""
+
+    def contains(self, value: float) -> bool:
+        """True if the scalar ``value`` lies in the valid range."""
+        above = value >= self.lo if self.lo_inclusive else value > self.lo
+        below = value <= self.hi if self.hi_inclusive else value < self.hi
+        return bool(above and below)
+
+    def range_text(self) -> str:
+        """The valid range as text, e.g. ``'0 < alpha < inf'`` or ``'-1 < nu < 0.5'``."""
+        if self.lo == -_INF and self.hi == _INF:
+            return f"{self.name} real"
+        left = "" if self.lo == -_INF else f"{self.lo:g} {'<=' if self.lo_inclusive else '<'} "
+        right = "" if self.hi == _INF else f" {'<=' if self.hi_inclusive else '<'} {self.hi:g}"
+        if self.hi == _INF and self.lo != -_INF:
+            right = " < inf"
+        return f"{left}{self.name}{right}"
+
+    def help(self) -> str:
+        """One line for ``--help``: meaning, valid range, default and source."""
+        parts = [self.meaning, self.range_text()]
+        if self.default is not None:
+            parts.append(f"default {self.default:g}")
+        if self.source:
+            parts.append(self.source)
+        return "; ".join(parts)
+
+    def label(self, si: bool = False) -> str:
+        """Axis label, e.g. ``'$\\alpha$'`` or ``'$P$ (N)'``."""
+        if si and self.si_unit and self.si_unit != "1":
+            return f"${self.symbol}$ ({self.si_unit})"
+        return f"${self.symbol}$"
+
+
+def _registry(*items: Quantity) -> dict[str, Quantity]:
+    return {q.name: q for q in items}
+
+
+#: Dimensionless inputs of :class:`asperity.Model` (and the Hurtado-Kim constants).
+MODEL_PARAMETERS = _registry(
+    Quantity("alpha", r"\alpha", "surface roughness parameter (sigma/R)^(1/2)", lo=0.0, log=True,
+             typical=(1e-4, 0.3), source="Eq 7"),
+    Quantity("beta", r"\beta", "friction regime parameter (R sigma)^(1/2)/b", lo=0.0, log=True,
+             typical=(10.0, 1e6), source="Eq 7"),
+    Quantity("gamma", r"\gamma", "adhesion parameter w/(E* b); 0 = no adhesion (Hertz)", lo=0.0,
+             lo_inclusive=True, log=True, typical=(1e-6, 0.05), default=0.0, source="Eq 16"),
+    Quantity("nu", r"\nu", "Poisson's ratio (the paper does not state it)", lo=-1.0, hi=0.5,
+             typical=(0.0, 0.49), default=0.3, source="decisions.md 4"),
+    Quantity("h_over_b", "h/b", "Dugdale range over Burgers vector (paper: 1)", lo=0.0, log=True,
+             typical=(0.1, 10.0), default=1.0, source="Eq 15"),
+    Quantity("tau_f1", r"\bar\tau_{f1}", "Hurtado-Kim friction stress tau_f/G* of small contacts (region 1)",
+             lo=0.0, log=True, typical=(1e-4, 0.2), default=1.0 / 43.0, source="Eq 2, Hurtado & Kim 1999"),
+    Quantity("tau_f2", r"\bar\tau_{f2}", "Hurtado-Kim friction stress tau_f/G* of large contacts (region 3)",
+             lo=0.0, log=True, typical=(1e-6, 0.01), default=1.0 / 43.0 / 30.0, source="Eq 2, Hurtado & Kim 1999"),
+    Quantity("a1", r"\bar a_1", "Hurtado-Kim contact radius a/b where region 2 starts", lo=0.0, log=True,
+             typical=(1.0, 1e3), default=28.0, source="Eq 3, Hurtado & Kim 1999"),
+    Quantity("a2", r"\bar a_2", "Hurtado-Kim contact radius a/b where region 2 ends (> a1)", lo=0.0, log=True,
+             typical=(1e3, 1e7), default=8.0e4, source="Eq 3, Hurtado & Kim 1999"),
+)
+
+#: Inputs of a physical contact (:class:`asperity.physical.PhysicalContact`), SI units.
+PHYSICAL_PARAMETERS = _registry(
+    Quantity("sigma_s", r"\sigma_s", "standard deviation of summit heights", unit="m", si_name="sigma_s_m",
+             si_unit="m", lo=0.0, log=True, typical=(1e-10, 1e-5), source="Eq 7"),
+    Quantity("R", "R", "mean summit radius of curvature", unit="m", si_name="R_m", si_unit="m", lo=0.0,
+             log=True, typical=(1e-8, 1e-3), source="Eq 7"),
+    Quantity("eta", r"\eta", "summit density (summits per area)", unit="1/m^2", si_name="eta_per_m2",
+             si_unit="1/m^2", lo=0.0, log=True, typical=(1e8, 1e16)),
+    Quantity("area", "A_0", "nominal contact area", unit="m^2", si_name="area_m2", si_unit="m^2", lo=0.0,
+             log=True, typical=(1e-12, 1e-2)),
+    Quantity("E", "E", "Young's modulus", unit="Pa", si_name="E_Pa", si_unit="Pa", lo=0.0, log=True,
+             typical=(1e8, 1.2e12)),
+    Quantity("E_star", "E^*", "composite Young's modulus", unit="Pa", si_name="E_star_Pa", si_unit="Pa",
+             lo=0.0, log=True, typical=(1e8, 1.2e12)),
+    Quantity("b", "b", "Burgers vector", unit="m", si_name="b_m", si_unit="m", lo=0.0, log=True,
+             typical=(1e-10, 1e-9), source="Eq 7"),
+    Quantity("w", "w", "work of adhesion", unit="J/m^2", si_name="w_J_m2", si_unit="J/m^2", lo=0.0,
+             lo_inclusive=True, log=True, typical=(1e-3, 5.0), source="Eq 16"),
+    Quantity("h", "h", "Dugdale range of the adhesive stress", unit="m", si_name="h_m", si_unit="m", lo=0.0,
+             log=True, typical=(1e-11, 1e-8), source="Eq 14"),
+    Quantity("tau", r"\tau", "interfacial shear strength", unit="Pa", si_name="tau_Pa", si_unit="Pa", lo=0.0,
+             log=True, typical=(1e5, 1e10)),
+)
+
+#: Columns of every curve (dimensionless, and SI for a physical contact), in output order.
+CURVE_COLUMNS = _registry(
+    Quantity("d", r"d/\sigma", "separation d/sigma", unit="sigma", si_name="d_m", si_unit="m",
+             si_meaning="separation of the flat from the mean summit height"),
+    Quantity("P", r"P/NGb^2", "normal force P/(N G b^2), compressive > 0", unit="N G b^2", si_name="P_N",
+             si_unit="N", si_meaning="total normal force, compressive > 0", log=True),
+    Quantity("F", r"F/NGb^2", "friction force F/(N G b^2)", unit="N G b^2", si_name="F_N", si_unit="N",
+             si_meaning="total friction force", log=True),
+    Quantity("mu", r"\mu", "friction coefficient F/P (NaN where P <= 0)", si_name="mu", si_unit="1",
+             si_meaning="friction coefficient F/P (NaN where P <= 0)", log=True),
+    Quantity("area", r"A/N\pi b^2", "real contact area A/(N pi b^2)", unit="N pi b^2", si_name="area_m2",
+             si_unit="m^2", si_meaning="real contact area", log=True),
+    Quantity("pressure", r"P/E^*A", "mean contact pressure P/(E* A) (NaN without contact)", unit="E*",
+             si_name="pressure_Pa", si_unit="Pa",
+             si_meaning="mean pressure over the real contact area, P/area (NaN without contact)", log=True),
+    Quantity("contacts", "n/N", "fraction of asperities in contact n/N", si_name="contacts", si_unit="1",
+             si_meaning="number of asperities in contact"),
+)
+
+
+def quantity(name: str) -> Quantity:
+    """The :class:`Quantity` called ``name`` in any registry (model parameters first).
+
+    Raises
+    ------
+    ValueError
+        For an unknown name; the message lists the known ones.
+    """
+    for registry in (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS):
+        if name in registry:
+            return registry[name]
+    known = sorted({*MODEL_PARAMETERS, *PHYSICAL_PARAMETERS, *CURVE_COLUMNS})
+    raise ValueError(f"unknown quantity {name!r}; known: {', '.join(known)}")
