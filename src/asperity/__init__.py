@@ -14,19 +14,66 @@ Layers, each importing only downward:
   :mod:`~asperity.multi_asperity`
 * curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
   the command line: :mod:`~asperity.cli`
+
+Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
+the first use of a name below (``asperity.load_curve``) or of a submodule
+(``asperity.jkr``, ``asperity.physical``) imports the module that defines it.  So the
+command line answers ``--help`` without loading NumPy or SciPy, and ``from asperity
+import load_curve`` works as before.
 """
 
+from __future__ import annotations
+
+import importlib
+
 from ._version import __version__
-from .curves import CurveResult, Model, PullOff, load_curve, pull_off, separation_curve
-from .friction_stress import ConstantShear, HurtadoKim
-from .heights import GAUSSIAN, Gaussian, HeightDistribution
-from .maugis_dugdale import LAMBDA_C, md_branch_end, md_pull_off, md_solve
-from .multi_asperity import (
-    contact_fraction,
-    friction_force,
-    mean_pressure,
-    normal_force,
-    real_contact_area,
+
+#: Public name -> submodule defining it; imported on first access (module ``__getattr__``).
+_EXPORTS = {
+    "CurveResult": "curves",
+    "Model": "curves",
+    "PullOff": "curves",
+    "load_curve": "curves",
+    "pull_off": "curves",
+    "separation_curve": "curves",
+    "ConstantShear": "friction_stress",
+    "HurtadoKim": "friction_stress",
+    "GAUSSIAN": "heights",
+    "Gaussian": "heights",
+    "HeightDistribution": "heights",
+    "LAMBDA_C": "maugis_dugdale",
+    "md_branch_end": "maugis_dugdale",
+    "md_pull_off": "maugis_dugdale",
+    "md_solve": "maugis_dugdale",
+    "contact_fraction": "multi_asperity",
+    "friction_force": "multi_asperity",
+    "mean_pressure": "multi_asperity",
+    "normal_force": "multi_asperity",
+    "real_contact_area": "multi_asperity",
+}
+
+#: Public submodules reachable as attributes (``asperity.jkr``), imported on first access.
+#: Any other public submodule (one added later) is found the same way.
+_SUBMODULES = (
+    "asperity_law",
+    "cli",
+    "curves",
+    "dmt",
+    "friction_stress",
+    "groups",
+    "heights",
+    "hertz",
+    "jkr",
+    "materials",
+    "maugis_dugdale",
+    "multi_asperity",
+    "physical",
+    "quadrature",
+    "quantities",
+    "reference",
+    "studies",
+    "topography",
+    "units",
 )
 
 __all__ = [
@@ -52,3 +99,23 @@ __all__ = [
     "normal_force",
     "real_contact_area",
 ]
+
+
+def __getattr__(name: str):
+    """Import a public name or submodule on first access (PEP 562)."""
+    if name in _EXPORTS:
+        value = getattr(importlib.import_module(f"{__name__}.{_EXPORTS[name]}"), name)
+        globals()[name] = value  # later accesses skip this function
+        return value
+    if not name.startswith("_"):
+        try:
+            return importlib.import_module(f"{__name__}.{name}")  # also sets the attribute
+        except ModuleNotFoundError as err:
+            if err.name != f"{__name__}.{name}":  # the submodule exists but an import inside failed
+                raise
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The public names, the public submodules and what is already loaded."""
+    return sorted({*globals(), *__all__, *_SUBMODULES})

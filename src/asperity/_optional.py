@@ -7,7 +7,9 @@ the capability and the extra to install, e.g.::
 
     fitting needs lmfit: pip install 'asperity[fit]'
 
-The command line turns that error into one line and exit status 2.
+The error is a :class:`MissingDependency`, a subclass of :class:`ImportError`, so
+``except ImportError`` still catches it; the command line turns it into one line and exit
+status 2.
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from __future__ import annotations
 import importlib
 import warnings
 
-__all__ = ["require", "install_hint", "EXTRAS"]
+__all__ = ["require", "install_hint", "EXTRAS", "MissingDependency"]
 
 #: The extra that provides each optional top-level package.
 EXTRAS = {
@@ -34,6 +36,10 @@ EXTRAS = {
     "bokeh": "explore",
     "ContactMechanics": "bem",
 }
+
+
+class MissingDependency(ImportError):
+    """An optional package is not installed; the message says which extra installs it."""
 
 
 def install_hint(module: str, extra: str | None = None) -> str:
@@ -56,8 +62,8 @@ def require(module: str, *, purpose: str, extra: str | None = None):
 
     Raises
     ------
-    ImportError
-        ``"{purpose} needs {package}: pip install 'asperity[{extra}]'"``.
+    MissingDependency
+        (an :class:`ImportError`) ``"{purpose} needs {package}: pip install 'asperity[{extra}]'"``.
     """
     try:
         with warnings.catch_warnings():
@@ -66,4 +72,4 @@ def require(module: str, *, purpose: str, extra: str | None = None):
             return importlib.import_module(module)
     except ImportError as err:
         package = module.split(".")[0]
-        raise ImportError(f"{purpose} needs {package}: {install_hint(package, extra)}") from err
+        raise MissingDependency(f"{purpose} needs {package}: {install_hint(package, extra)}") from err

@@ -6,7 +6,6 @@ figure is drawn.
 
 from __future__ import annotations
 
-import csv
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -15,6 +14,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .._atomic import atomic_path
+from .._csv import rows_to_csv
 from ..curves import COLUMNS, CurveResult, Model
 
 #: Poisson's ratio and Dugdale range used for every study (the paper states h = b only).
@@ -159,12 +160,11 @@ def csv_rows(data: FigureData) -> list[dict]:
 
 
 def write_csv(path, rows: Sequence[dict], columns: Sequence[str]) -> None:
-    """Write ``rows`` (dicts) with a header; floats at full precision (repr)."""
-    with open(path, "w", encoding="utf-8", newline="") as fh:
-        writer = csv.writer(fh, lineterminator="\n")
-        writer.writerow(columns)
-        for row in rows:
-            writer.writerow([repr(v) if isinstance(v, float) else v for v in (row[c] for c in columns)])
+    """Write ``rows`` (dicts) with a header, atomically; floats at full precision (repr).
+
+    The text is :func:`asperity._csv.rows_to_csv`'s, the library's one CSV writer.
+    """
+    rows_to_csv(rows, columns, path)
 
 
 # -- plotting ----------------------------------------------------------------------------
@@ -224,7 +224,8 @@ def save_figure(fig, *paths) -> None:
     """Save ``fig`` to each path (format from the suffix) under the studies' rc settings.
 
     PNGs at :data:`DPI`; no timestamps or software versions in the files, so a rerun with
-    the same library gives the same bytes.
+    the same library gives the same bytes.  Each file is written atomically (a temporary
+    file renamed into place).
     """
     import matplotlib as mpl
 
@@ -232,7 +233,8 @@ def save_figure(fig, *paths) -> None:
         for path in paths:
             fmt = str(path).rsplit(".", 1)[-1].lower()
             metadata = {"Date": None} if fmt == "svg" else {"Software": None} if fmt == "png" else None
-            fig.savefig(path, dpi=DPI, metadata=metadata)
+            with atomic_path(path) as tmp:  # an interrupted save leaves no truncated image
+                fig.savefig(tmp, dpi=DPI, metadata=metadata, format=fmt)
 
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079")

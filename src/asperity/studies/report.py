@@ -15,6 +15,7 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
+from .._atomic import atomic_write
 from .._version import __version__
 from ._common import CSV_COLUMNS, DPI, FIGSIZE, H_OVER_B, NU, csv_rows, save_figure, write_csv
 from .figures import FIGURES
@@ -208,6 +209,8 @@ def reproduce(out_dir, progress: Callable[[str], object] | None = None) -> dict:
     ----------
     out_dir : str or path
         Output directory (created if missing; existing files of the same names are replaced).
+        Every file is written atomically (to a temporary file, then renamed), so an
+        interrupted run leaves complete files only, never a truncated one.
     progress : callable, optional
         Called with one line of text per figure when it is done (``"Fig 3: ... done in
         0.4 s"``), then once for Table 1 and once for ``index.html``.
@@ -257,7 +260,7 @@ def reproduce(out_dir, progress: Callable[[str], object] | None = None) -> dict:
 
     t0 = time.perf_counter()
     index = out / "index.html"
-    index.write_text(_html(figs, pngs, rows, time.perf_counter() - t_start), encoding="utf-8")
+    atomic_write(index, _html(figs, pngs, rows, time.perf_counter() - t_start))
     files.append(str(index))
     say(f"index.html ... done in {time.perf_counter() - t0:.1f} s")
 

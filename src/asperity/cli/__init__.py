@@ -1,0 +1,73 @@
+"""The ``asperity`` command line.
+
+``asperity reproduce`` recomputes the paper's figures and Table 1; ``separation``,
+``load``, ``pulloff`` and ``md`` compute curves for one's own parameters; ``surface``
+reads a measured surface and ``materials`` lists the materials table.  Every error
+prints one line and exits with status 2.
+
+One module per command (:data:`COMMANDS`), each with ``NAME``, ``HELP``,
+``DESCRIPTION`` (and optionally ``EPILOG``), ``add_arguments(parser)`` and ``run(args)``;
+the shared parts are :mod:`~asperity.cli._args` (lists, quantities, argument groups),
+:mod:`~asperity.cli._output` (formats, atomic writing) and :mod:`~asperity.cli._plot`.
+Command modules import NumPy, SciPy and the model inside ``run``, after parsing, so
+``--help`` and ``--version`` answer without loading them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from .._optional import MissingDependency
+from .._version import __version__
+from . import load, materials, md, pulloff, reproduce, separation, surface
+from ._args import UNITS, UsageError, join_negative_lists, parse_list
+
+__all__ = ["main", "build_parser", "parse_list", "UsageError", "COMMANDS"]
+
+#: Command name -> its module, in the order ``asperity --help`` lists them.
+COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, surface, materials, md)}
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, no usage dump
+        raise UsageError(message)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The parser of every command in :data:`COMMANDS`."""
+    parser = _Parser(
+        prog="asperity",
+        description="Multi-asperity contact, adhesion and friction (Greenwood-Williamson + "
+                    "Hurtado-Kim + Maugis-Dugdale).",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog=f"Output columns and units:\n{UNITS}",
+    )
+    parser.add_argument("--version", action="version", version=f"asperity {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    for module in COMMANDS.values():
+        epilog = getattr(module, "EPILOG", None)
+        kwargs = {"formatter_class": argparse.RawDescriptionHelpFormatter, "epilog": epilog} if epilog else {}
+        module.add_arguments(sub.add_parser(module.NAME, help=module.HELP, description=module.DESCRIPTION,
+                                            **kwargs))
+    return parser
+
+
+def main(argv=None) -> int:
+    """Run the command line on ``argv`` (default ``sys.argv[1:]``); return the exit status."""
+    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else argv
+    try:
+        args = parser.parse_args(join_negative_lists(argv))
+        if args.command is None:
+            parser.print_help()
+            return 2
+        COMMANDS[args.command].run(args)
+    except (UsageError, ValueError, MissingDependency) as exc:  # ValueError: the library's own checks
+        print(f"asperity: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("asperity: interrupted", file=sys.stderr)
+        return 130
+    return 0
+

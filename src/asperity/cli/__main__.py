@@ -1,0 +1,7 @@
+"""``python -m asperity.cli``: the same as the ``asperity`` command."""
+
+import sys
+
+from . import main
+
+sys.exit(main())

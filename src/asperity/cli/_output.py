@@ -1,0 +1,119 @@
+"""Command-line output: tables, CSV and strict JSON, written atomically to -o or standard output.
+
+Formats: ``table`` (aligned columns, 6 significant digits, for reading), ``csv`` (the
+library's one CSV writer, :mod:`asperity._csv`: full-precision floats) and ``json``
+(strict: NaN and infinity are ``null``, :mod:`asperity._json`).  Without ``--format``
+the output is a table on a terminal and CSV (JSON for ``surface``) otherwise.
+
+Order of writing, all or nothing (:func:`write_outputs`):
+
+1. the figure (``--plot``) is drawn and saved to a temporary file beside its target;
+2. the table goes to a temporary file beside ``-o`` (or, without ``-o``, to standard
+   output, only once the figure has been drawn);
+3. the table's file is renamed into place, then the figure's.
+
+So a failing ``--plot`` (matplotlib missing, an unknown image format, an unwritable
+directory) writes nothing and prints nothing on standard output, and an error or an
+interruption leaves no truncated file: ``-o`` and ``--plot`` targets keep their old
+content or stay absent.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import sys
+
+from .._atomic import atomic_path
+from .._csv import rows_to_csv
+from .._json import dumps
+from ._args import UsageError
+
+__all__ = ["output_format", "format_rows", "format_json", "curve_rows", "write_outputs", "image_format"]
+
+
+def output_format(args, piped: str = "csv") -> str:
+    """``--format``, or the default: ``table`` on a terminal, ``piped`` otherwise."""
+    if args.format:
+        return args.format
+    return "table" if (args.output is None and sys.stdout.isatty()) else piped
+
+
+def format_json(value, *, indent: int | None = None) -> str:
+    """Strict JSON text of ``value`` (NaN/inf as null) and a newline."""
+    return dumps(value, indent=indent) + "\n"
+
+
+def _short(v) -> str:
+    import numpy as np
+
+    if isinstance(v, bool | np.bool_):
+        return str(bool(v))
+    if isinstance(v, float | np.floating):
+        return f"{float(v):.6g}"
+    return str(v)
+
+
+def format_rows(rows: list[dict], fmt: str) -> str:
+    """Rows (dicts with the same keys) as ``table``, ``csv`` or ``json`` text."""
+    if fmt == "json":
+        return format_json(rows, indent=1)
+    if fmt == "csv":
+        return rows_to_csv(rows)
+    names = list(rows[0]) if rows else []
+    cells = [[_short(r[n]) for n in names] for r in rows]
+    widths = [max(len(n), *(len(c[i]) for c in cells)) if cells else len(n) for i, n in enumerate(names)]
+    out = ["  ".join(n.rjust(w) for n, w in zip(names, widths, strict=True))]
+    out += ["  ".join(c.rjust(w) for c, w in zip(row, widths, strict=True)) for row in cells]
+    return "\n".join(out) + "\n"
+
+
+def curve_rows(curve) -> list[dict]:
+    """One dict per point of a curve: dimensionless names, or SI names with units (``P_N``)."""
+    cols = curve.columns()
+    return [{k: float(v[i]) for k, v in cols.items()} for i in range(len(curve))]
+
+
+@contextlib.contextmanager
+def _target(path: str, what: str):
+    """:func:`asperity._atomic.atomic_path` with an OSError turned into a one-line UsageError."""
+    try:
+        with atomic_path(path) as tmp:
+            yield tmp
+    except OSError as exc:
+        raise UsageError(f"cannot write {what} {path!r}: {exc.strerror or exc}") from None
+
+
+def write_outputs(text: str, args, plot=None) -> None:
+    """Write ``text`` to ``args.output`` (or standard output) and the figure to ``args.plot``.
+
+    Parameters
+    ----------
+    text : str
+        The formatted result.
+    args : argparse.Namespace
+        With ``output`` and (optionally) ``plot``: target paths or None.
+    plot : callable, optional
+        ``plot(path, fmt)`` draws the figure and saves it to ``path`` in image format
+        ``fmt``; called only when ``args.plot`` is set.
+
+    See the module docstring for the order: the figure first, nothing written unless
+    everything succeeded.
+    """
+    plot_path = getattr(args, "plot", None)
+    with contextlib.ExitStack() as stack:
+        if plot is not None and plot_path:
+            tmp = stack.enter_context(_target(plot_path, "plot"))
+            plot(tmp, image_format(plot_path))
+        if args.output:
+            tmp = stack.enter_context(_target(args.output, "output file"))
+            with open(tmp, "w", encoding="utf-8") as fh:
+                fh.write(text)
+        else:
+            sys.stdout.write(text)
+            sys.stdout.flush()
+
+
+def image_format(path: str) -> str:
+    """Image format of a figure file from its suffix (``'png'`` when it has none)."""
+    return os.path.splitext(path)[1][1:].lower() or "png"

@@ -1,0 +1,29 @@
+"""``asperity materials``: the shipped materials table (SI units, with sources)."""
+
+from __future__ import annotations
+
+import argparse
+
+from ._args import add_output_arguments
+
+NAME = "materials"
+HELP = "list the materials table (SI units, with sources)"
+DESCRIPTION = ("The shipped materials table: E [Pa], nu, Burgers vector b [m], work of adhesion w [J/m^2]; "
+               "empty = missing, with sources.")
+
+#: Columns listed, in order (``sources`` only with ``--sources``).
+KEYS = ("name", "kind", "E_Pa", "nu", "b_m", "work_of_adhesion_J_m2")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--sources", action="store_true", help="include the source of every number")
+    add_output_arguments(parser, plot=False)
+
+
+def run(args) -> None:
+    from ..materials import material_table
+    from . import _output
+
+    keys = [*KEYS, "sources"] if args.sources else list(KEYS)
+    rows = [{k: ("" if row.get(k) is None else row.get(k)) for k in keys} for row in material_table()]
+    _output.write_outputs(_output.format_rows(rows, _output.output_format(args)), args)

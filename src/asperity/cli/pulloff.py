@@ -1,0 +1,44 @@
+"""``asperity pulloff``: the pull-off force (Table 1), dimensionless or physical."""
+
+from __future__ import annotations
+
+import argparse
+
+from ._args import (
+    UsageError,
+    add_contact_arguments,
+    add_model_arguments,
+    add_output_arguments,
+    contact_from_args,
+    is_physical,
+    model_from_args,
+)
+
+NAME = "pulloff"
+HELP = "pull-off force (Table 1)"
+DESCRIPTION = "Largest tensile force |P|/(N G b^2) over separations up to d_max, and where it occurs."
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_model_arguments(parser)
+    add_contact_arguments(parser)
+    parser.add_argument("--d-max", dest="d_max", type=float, default=None,
+                        help="largest separation d/sigma searched (default: 10 beyond the end of the "
+                             "asperities' stable branch, i.e. 10 without adhesion range)")
+    add_output_arguments(parser, plot=False)
+
+
+def run(args) -> None:
+    from . import _output
+
+    if is_physical(args):
+        po = contact_from_args(args).pull_off(args.d_max)
+        row = {"pull_off_N": po.force, "d_m": po.d}
+    else:
+        if args.gamma is None:
+            raise UsageError("pulloff needs --gamma (the adhesion parameter)")
+        po = model_from_args(args).pull_off(args.d_max)
+        row = {"pull_off": po.force, "d": po.d}
+    fmt = _output.output_format(args)
+    text = _output.format_json(row) if fmt == "json" else _output.format_rows([row], fmt)
+    _output.write_outputs(text, args)

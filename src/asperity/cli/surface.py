@@ -1,0 +1,55 @@
+"""``asperity surface``: Greenwood-Williamson summit parameters of a measured surface."""
+
+from __future__ import annotations
+
+import argparse
+
+from ._args import output_file
+
+NAME = "surface"
+HELP = "GW summit parameters of a measured surface (AFM map, profile)"
+DESCRIPTION = ("Read a height map or line scan (any format SurfaceTopography reads) and compute the summit "
+               "parameters sigma_s, R, eta two ways: from the spectral moments m0, m2, m4 (Nayak/McCool) and "
+               "by summit detection. With --material, also alpha and beta (Eq 7). Needs asperity[topography].")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", help="height map or profile file")
+    parser.add_argument("--material", help="material name for alpha, beta (its Burgers vector b)")
+    parser.add_argument("--b", help="Burgers vector, a length (e.g. 0.2885nm), instead of --material")
+    parser.add_argument("--size", help="scan size when the file stores none: Lx,Ly or L with units "
+                                       "(e.g. 10um,10um)")
+    parser.add_argument("--unit", help="height/length unit when the file stores none (e.g. nm)")
+    parser.add_argument("--fill-undefined", action="store_true",
+                        help="fill missing (NaN) pixels by interpolation")
+    parser.add_argument("--format", choices=("table", "json"), default=None,
+                        help="output format (default: a readable summary on a terminal, JSON otherwise)")
+    parser.add_argument("-o", "--output", metavar="FILE", type=output_file,
+                        help="write to FILE instead of standard output")
+
+
+def run(args) -> None:
+    from .._optional import require
+    from . import _output
+    from ._args import UsageError, quantity, quantity_items
+
+    require("SurfaceTopography", purpose="surface", extra="topography")
+    from ..topography import analyse_surface
+
+    kwargs = {"fill_undefined": args.fill_undefined}
+    if args.size:
+        kwargs["physical_sizes"] = tuple(quantity_items(args.size, "m", "--size"))
+    if args.unit:
+        kwargs["unit"] = args.unit
+    b = quantity(args.b, "m", "--b") if args.b else None
+    if args.material and b is not None:
+        raise UsageError("give --material or --b, not both")
+    mat = None
+    if args.material:
+        from ..materials import material
+
+        mat = material(args.material)
+    result = analyse_surface(args.file, material=mat, b=b, **kwargs)
+    fmt = _output.output_format(args, piped="json")
+    text = result.summary() + "\n" if fmt == "table" else _output.format_json(result.to_dict(), indent=1)
+    _output.write_outputs(text, args)
