@@ -111,10 +111,11 @@ def _spaced(start: float, stop: float, count: int, *, log: bool, name: str, text
             raise UsageError(f"{name}: a log-spaced range start:stop:count needs start, "
                              f"stop > 0 (use a comma list for zero or negative loads)")
         return np.geomspace(start, stop, count)
-    with np.errstate(over="ignore", invalid="ignore"):  # a step beyond the float range
+    with np.errstate(over="ignore", invalid="ignore"):
         values = np.linspace(start, stop, count)
-    if not np.all(np.isfinite(values)):
-        raise UsageError(f"{name}: the range {_show(text)} does not fit in floating point")
+        if not np.all(np.isfinite(values)):  # stop - start beyond the float range: weigh the ends
+            t = np.linspace(0.0, 1.0, count)
+            values = start * (1.0 - t) + stop * t
     return values
 
 

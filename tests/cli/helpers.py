@@ -1,0 +1,37 @@
+"""Shared pieces of the command-line tests."""
+
+import csv
+import io
+import json
+
+from asperity.cli import main
+
+MODEL = ["--alpha", "0.01", "--beta", "1000", "--gamma", "1e-3"]
+AU = ["--material", "Au", "--sigma", "2nm", "--radius", "1um", "--density", "1e12/m^2", "--area", "1mm^2"]
+
+
+def run(capsys, *argv):
+    """Run ``asperity *argv`` in-process: (exit status, stdout, stderr)."""
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def rows_of(text):
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def _reject_constant(name):
+    raise ValueError(f"non-standard JSON constant {name}")
+
+
+def strict_json(text):
+    """Parse JSON as a strict parser would: NaN, Infinity and -Infinity are errors."""
+    return json.loads(text, parse_constant=_reject_constant)
+
+
+def one_line_error(code, err, needle=""):
+    """The command-line contract for errors: status 2, one line, no traceback."""
+    lines = err.strip().splitlines()
+    return (code == 2 and len(lines) == 1 and lines[0].startswith("asperity: error:") and needle in lines[0]
+            and "Traceback" not in err)

@@ -1,0 +1,111 @@
+"""``asperity.cli``: the parser, main's error contract, the entry point and start-up cost."""
+
+import subprocess
+import sys
+import textwrap
+
+import pytest
+
+import asperity
+from asperity.cli import COMMANDS, build_parser, main
+
+from .helpers import AU, MODEL, one_line_error, rows_of, run
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["load", "--alpha", "-1", "--beta", "10", "--P", "1"], "alpha"),
+    (["load", "--alpha", "0.01", "--beta", "10", "--P", "0,1"], "P"),
+    (["load", "--alpha", "0.01", "--beta", "10", "--P", "a,b"], "--P"),
+    (["load", "--alpha", "0.01", "--beta", "10", "--P", "0:1:5"], "--P"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--d", "0,nan"], "--d"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--nu", "0.7", "--d", "0"], "nu"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--d", "0", "--bogus"], "bogus"),
+    (["pulloff", "--alpha", "0.01", "--beta", "10"], "gamma"),
+    (["md", "--lam", "-1", "--pulloff"], "lam"),
+    (["md", "--lam", "1", "--delta", "-5"], "delta"),
+    (["separation", "--alpha", "x", "--beta", "10", "--d", "0"], "alpha"),
+    (["separation", "--alpha", "0.01", "--beta", "10", "--d", "0", "-o", "/nonexistent/dir/f"],
+     "cannot write"),
+    (["nosuchcommand"], "nosuchcommand"),
+])
+def test_errors_one_line_status_2(capsys, argv, needle):
+    code, out, err = run(capsys, *argv)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("asperity: error:") and needle in lines[0]
+    assert "Traceback" not in err
+
+
+def test_help_explains_every_parameter(capsys):
+    for cmd in ("separation", "load", "pulloff", "md", "reproduce"):
+        with pytest.raises(SystemExit) as exc:
+            main([cmd, "--help"])
+        assert exc.value.code == 0
+        out = " ".join(capsys.readouterr().out.split())
+        for word in {"separation": ["--alpha", "--beta", "--gamma", "--nu", "--h-over-b",
+                                    "linearly", "N G b^2"],
+                     "load": ["logarithmically", "--plot", "contacts"],
+                     "pulloff": ["--d-max"], "md": ["--lam", "--delta", "--pulloff"],
+                     "reproduce": ["--out"]}[cmd]:
+            assert word in out, (cmd, word)
+
+
+def test_every_command_module_is_registered():
+    # The registry is the parser: one subcommand per module, each with the module's interface.
+    parser = build_parser()
+    sub = next(a for a in parser._actions if a.dest == "command")
+    assert list(sub.choices) == list(COMMANDS)
+    assert set(COMMANDS) == {"reproduce", "separation", "load", "pulloff", "surface", "materials", "md"}
+    for name, module in COMMANDS.items():
+        assert module.NAME == name and module.HELP and callable(module.add_arguments) and callable(module.run)
+
+
+def test_no_command_prints_help(capsys):
+    code, out, _ = run(capsys)
+    assert code == 2 and "COMMAND" in out
+
+
+def test_subprocess_entry_point(tmp_path):
+    version = subprocess.run([sys.executable, "-m", "asperity.cli", "--version"],
+                             capture_output=True, text=True, check=True)
+    assert version.stdout.strip() == f"asperity {asperity.__version__}"
+    res = subprocess.run([sys.executable, "-m", "asperity.cli", "load", *MODEL, "--P", "10"],
+                         capture_output=True, text=True, check=True)
+    row = rows_of(res.stdout)[0]  # not a terminal: CSV by default
+    assert float(row["P"]) == 10.0
+    bad = subprocess.run([sys.executable, "-m", "asperity.cli", "load", "--alpha", "0",
+                          "--beta", "1", "--P", "1"], capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "Traceback" not in bad.stderr
+
+
+HEAVY = ("numpy", "scipy", "matplotlib", "pint", "SurfaceTopography", "pandas")
+
+
+@pytest.mark.parametrize("code", [
+    "import asperity",
+    "import asperity.cli",
+    "from asperity.cli import main\ntry:\n    main(['--version'])\nexcept SystemExit:\n    pass",
+    "from asperity.cli import main\nfor cmd in ([], ['load'], ['surface'], ['md'], ['reproduce']):\n"
+    "    try:\n        main([*cmd, '--help'])\n    except SystemExit:\n        pass",
+])
+def test_startup_imports_no_numerics(code):
+    # --help and --version must not pay for NumPy/SciPy/matplotlib (well under 0.3 s).
+    probe = code + textwrap.dedent(f"""
+        import sys
+        print(sorted(m for m in sys.modules if m.split('.')[0] in {HEAVY!r}))
+    """)
+    res = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert res.stdout.strip().splitlines()[-1] == "[]", res.stdout
+
+
+@pytest.mark.parametrize("argv, module, extra", [
+    (["load", *MODEL, "--P", "1", "--plot", "{tmp}/c.png"], "matplotlib", "plot"),
+    (["reproduce", "--out", "{tmp}/paper"], "matplotlib", "plot"),
+    (["load", *AU, "--load", "1mN"], "pint", "units"),
+    (["surface", "{tmp}/scan.x3p"], "SurfaceTopography", "topography"),
+])
+def test_missing_optional_dependency_is_one_line(capsys, monkeypatch, tmp_path, argv, module, extra):
+    monkeypatch.setitem(sys.modules, module, None)  # makes "import module" fail
+    code, out, err = run(capsys, *(a.replace("{tmp}", str(tmp_path)) for a in argv))
+    assert one_line_error(code, err, f"needs {module}: pip install 'asperity[{extra}]'")
+    assert out == "" and list(tmp_path.iterdir()) == []

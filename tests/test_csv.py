@@ -1,0 +1,45 @@
+"""``asperity._csv``: the one CSV writer (curves, physical curves, command line, studies)."""
+
+import csv
+import io
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from asperity._csv import columns_to_csv, rows_to_csv, table_to_csv
+
+
+def test_format_by_hand():
+    rows = [{"curve": "alpha=0.01 beta=1000", "adhesion": True, "x": 0.1, "n": 2, "s": None},
+            {"curve": 'a,"b"', "adhesion": np.bool_(False), "x": np.float32(0.5), "n": 3, "s": "t"}]
+    assert rows_to_csv(rows) == ('curve,adhesion,x,n,s\n'
+                                 'alpha=0.01 beta=1000,True,0.1,2,\n'
+                                 '"a,""b""",False,0.5,3,t\n')
+    assert rows_to_csv(rows, ["x", "curve"]).splitlines()[0] == "x,curve"
+
+
+def test_columns_are_all_floats():
+    text = columns_to_csv({"d": np.array([0, 1]), "P": [1e-300, np.float64(2.5)]})
+    assert text == "d,P\n0.0,1e-300\n1.0,2.5\n"
+    with pytest.raises(ValueError):
+        columns_to_csv({"a": [1.0, 2.0], "b": [1.0]})
+
+
+def test_write_to_buffer_and_path(tmp_path):
+    buf = io.StringIO()
+    assert columns_to_csv({"a": [1.0]}, buf) is None and buf.getvalue() == "a\n1.0\n"
+    path = tmp_path / "t.csv"
+    assert rows_to_csv([{"a": 1.5}], None, path) is None and path.read_text() == "a\n1.5\n"
+
+
+def test_empty_table():
+    assert table_to_csv(["a", "b"], []) == "a,b\n"
+
+
+@given(st.lists(st.floats(allow_nan=False), min_size=1, max_size=30))
+def test_floats_round_trip_exactly(values):
+    text = columns_to_csv({"v": np.array(values)})
+    back = [float(r[0]) for r in list(csv.reader(io.StringIO(text)))[1:]]
+    assert [repr(v) for v in back] == [repr(float(v)) for v in values]

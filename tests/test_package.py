@@ -1,0 +1,57 @@
+"""``import asperity``: lazy, and every public name and submodule reachable as before."""
+
+import subprocess
+import sys
+
+import pytest
+
+import asperity
+
+SUBMODULES = ["jkr", "dmt", "hertz", "maugis_dugdale", "friction_stress", "groups", "heights", "curves",
+              "physical", "materials", "multi_asperity", "asperity_law", "quantities", "units", "studies", "cli"]
+
+
+def test_public_names_are_the_defining_modules_objects():
+    import asperity.curves
+    import asperity.friction_stress
+    import asperity.heights
+    import asperity.maugis_dugdale
+    import asperity.multi_asperity
+
+    for name in asperity.__all__:
+        value = getattr(asperity, name)
+        if name == "__version__":
+            assert value == asperity._version.__version__
+            continue
+        homes = [m for m in (asperity.curves, asperity.friction_stress, asperity.heights,
+                             asperity.maugis_dugdale, asperity.multi_asperity) if hasattr(m, name)]
+        assert homes and getattr(homes[0], name) is value, name
+
+
+def test_from_import_and_star_import():
+    from asperity import load_curve, md_solve  # noqa: F401
+
+    namespace = {}
+    exec("from asperity import *", namespace)
+    assert set(asperity.__all__) <= set(namespace)
+
+
+@pytest.mark.parametrize("name", SUBMODULES)
+def test_submodules_are_attributes(name):
+    # In a fresh interpreter, so that no earlier import has set the attribute already.
+    res = subprocess.run([sys.executable, "-c", f"import asperity; print(asperity.{name}.__name__)"],
+                         capture_output=True, text=True, check=True)
+    assert res.stdout.strip() == f"asperity.{name}"
+    assert name in dir(asperity)
+
+
+def test_unknown_attribute():
+    with pytest.raises(AttributeError, match="no attribute 'nosuchthing'"):
+        asperity.nosuchthing  # noqa: B018
+    with pytest.raises(AttributeError):
+        asperity._private_thing  # noqa: B018
+    assert not hasattr(asperity, "nosuchthing")
+
+
+def test_dir_lists_public_names():
+    assert set(asperity.__all__) <= set(dir(asperity))
