@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sys
 
-from . import _output
+from ._output import curve_rows, format_rows, output_format, write_outputs
 from ._args import UsageError, contact_from_args, is_physical, model_from_args, parse_list, quantity_list, title
 
 __all__ = ["run_curve"]
@@ -45,8 +45,8 @@ def run_curve(args, kind: str) -> None:
         plot_curve(curve, path, fmt, x="d" if kind == "separation" else "P", title=title(args),
                    physical=physical)
 
-    text = _output.format_rows(_output.curve_rows(curve), _output.output_format(args))
-    _output.write_outputs(text, args, plot=plot)
+    text = format_rows(curve_rows(curve), output_format(args))
+    write_outputs(text, args, plot=plot)
     if physical:
         import numpy as np
 

@@ -22,8 +22,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args) -> None:
     from ..materials import material_table
-    from . import _output
+    from ._output import format_rows, output_format, write_outputs
 
     keys = [*KEYS, "sources"] if args.sources else list(KEYS)
     rows = [{k: ("" if row.get(k) is None else row.get(k)) for k in keys} for row in material_table()]
-    _output.write_outputs(_output.format_rows(rows, _output.output_format(args)), args)
+    write_outputs(format_rows(rows, output_format(args)), args)

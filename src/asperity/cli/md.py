@@ -30,7 +30,7 @@ def run(args) -> None:
     import numpy as np
 
     from ..maugis_dugdale import md_pull_off, md_solve
-    from . import _output
+    from ._output import format_rows, output_format, write_outputs
 
     if args.pulloff:
         rows = []
@@ -43,4 +43,4 @@ def run(args) -> None:
         m = np.sqrt(1.0 + t * t)
         rows = [{"delta": float(x), "A": float(a), "P": float(p), "m": float(mm)}
                 for x, a, p, mm in zip(delta, A, P, m, strict=True)]
-    _output.write_outputs(_output.format_rows(rows, _output.output_format(args)), args)
+    write_outputs(format_rows(rows, output_format(args)), args)

@@ -29,7 +29,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args) -> None:
-    from . import _output
+    from ._output import format_json, format_rows, output_format, write_outputs
 
     if is_physical(args):
         po = contact_from_args(args).pull_off(args.d_max)
@@ -39,6 +39,6 @@ def run(args) -> None:
             raise UsageError("pulloff needs --gamma (the adhesion parameter)")
         po = model_from_args(args).pull_off(args.d_max)
         row = {"pull_off": po.force, "d": po.d}
-    fmt = _output.output_format(args)
-    text = _output.format_json(row) if fmt == "json" else _output.format_rows([row], fmt)
-    _output.write_outputs(text, args)
+    fmt = output_format(args)
+    text = format_json(row) if fmt == "json" else format_rows([row], fmt)
+    write_outputs(text, args)

@@ -30,7 +30,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args) -> None:
     from .._optional import require
-    from . import _output
+    from ._output import format_json, output_format, write_outputs
     from ._args import UsageError, quantity, quantity_items
 
     require("SurfaceTopography", purpose="surface", extra="topography")
@@ -50,6 +50,6 @@ def run(args) -> None:
 
         mat = material(args.material)
     result = analyse_surface(args.file, material=mat, b=b, **kwargs)
-    fmt = _output.output_format(args, piped="json")
-    text = result.summary() + "\n" if fmt == "table" else _output.format_json(result.to_dict(), indent=1)
-    _output.write_outputs(text, args)
+    fmt = output_format(args, piped="json")
+    text = result.summary() + "\n" if fmt == "table" else format_json(result.to_dict(), indent=1)
+    write_outputs(text, args)
