@@ -20,7 +20,7 @@ from __future__ import annotations
 import argparse
 import os
 
-from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS
+from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 
 __all__ = [
     "MAX_POINTS",
@@ -233,16 +233,20 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=1.0, help=MODEL_HELP["h_over_b"])
 
 
+def _meaning(name: str) -> str:
+    return PHYSICAL_PARAMETERS[name].meaning
+
+
 def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
     """A physical contact: ``--material --sigma --radius --density --area --no-adhesion``."""
     ph = parser.add_argument_group(
         "physical contact (SI results; quantities with units, e.g. 2nm, 1um, 1e12/m^2, 1mm^2)")
     ph.add_argument("--material", help="material name from the table (asperity materials lists them), "
                                        "e.g. Au, Si, Au/Au")
-    ph.add_argument("--sigma", help="standard deviation of summit heights sigma_s, a length (e.g. 2nm)")
-    ph.add_argument("--radius", help="mean summit radius R, a length (e.g. 1um)")
-    ph.add_argument("--density", help="summit density eta, per area (e.g. 1e12/m^2)")
-    ph.add_argument("--area", help="nominal contact area, an area (e.g. 1mm^2)")
+    ph.add_argument("--sigma", help=f"{_meaning('sigma_s')} sigma_s, a length (e.g. 2nm)")
+    ph.add_argument("--radius", help=f"{_meaning('R')} R, a length (e.g. 1um)")
+    ph.add_argument("--density", help=f"{_meaning('eta')} eta, e.g. 1e12/m^2")
+    ph.add_argument("--area", help=f"{_meaning('area')}, an area (e.g. 1mm^2)")
     ph.add_argument("--no-adhesion", action="store_true",
                     help="ignore the material's work of adhesion (Hertz contacts, gamma = 0)")
 

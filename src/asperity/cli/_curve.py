@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import sys
 
-from ._output import curve_rows, format_rows, output_format, write_outputs
 from ._args import UsageError, contact_from_args, is_physical, model_from_args, parse_list, quantity_list, title
+from ._output import curve_rows, format_rows, output_format, write_outputs
 
 __all__ = ["run_curve"]
 

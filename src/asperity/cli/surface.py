@@ -30,8 +30,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args) -> None:
     from .._optional import require
-    from ._output import format_json, output_format, write_outputs
     from ._args import UsageError, quantity, quantity_items
+    from ._output import format_json, output_format, write_outputs
 
     require("SurfaceTopography", purpose="surface", extra="topography")
     from ..topography import analyse_surface
