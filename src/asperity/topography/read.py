@@ -229,8 +229,10 @@ def _check_metadata(name, channel, physical_sizes, unit):
     if channel.unit is None and unit is None:
         raise ValueError(f"{name}: the file does not store the unit of its heights; pass unit='m', 'um' or 'nm'")
     if channel.physical_sizes is not None and physical_sizes is not None:
-        raise ValueError(f"{name}: the file already stores the scan size {tuple(channel.physical_sizes)} "
-                         f"{channel.unit or ''}; do not pass physical_sizes")
+        stored = ", ".join(f"{float(size):g}" for size in channel.physical_sizes)
+        in_unit = f" {channel.unit}" if channel.unit else " (in the unit of its heights)"
+        raise ValueError(f"{name}: the file already stores the scan size ({stored}){in_unit}; "
+                         f"do not pass physical_sizes")
     if channel.unit is not None and unit is not None:
         raise ValueError(f"{name}: the file already stores the unit {channel.unit!r}; do not pass unit")
 
