@@ -127,7 +127,7 @@ def test_lambda_from_physical():
     # Eq 14 by hand for sigma0 = 1 GPa, w = 1 J/m^2, R = 1 um, E* = 100 GPa
     K = 4 / 3 * 100e9
     expected = 2 * 1e9 * (1e-6 / (math.pi * 1.0 * K**2)) ** (1 / 3)
-    assert md.md_lambda(1e9, 1.0, 1e-6, 100e9) == pytest.approx(expected, rel=1e-14)
+    assert md.md_lambda(1e-6, 1.0, 100e9, 1e9) == pytest.approx(expected, rel=1e-14)
 
 
 @pytest.mark.parametrize("call, name", [

@@ -2,11 +2,18 @@
 
 Each check raises :class:`ValueError` naming the parameter and its valid range, so a
 user never meets a silent NaN or a traceback from deep inside SciPy.
+
+The array checks (``check_*``) take plain numbers or arrays.  The scalar checks
+(``check_scalar_*``, ``check_optional_positive``) serve physical inputs: given a
+``unit``, they first convert a pint ``Quantity`` or a string such as ``'2nm'`` to that SI
+unit with :func:`asperity.units.to_si`, then return one Python ``float``.
 """
 
 from __future__ import annotations
 
 import numpy as np
+
+from .units import to_si
 
 __all__ = [
     "as_float_array",
@@ -15,16 +22,35 @@ __all__ = [
     "check_positive",
     "check_radius",
     "check_range",
+    "check_scalar_poisson",
+    "check_scalar_positive",
+    "check_optional_positive",
     "scalar",
 ]
 
 
 def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray:
-    """Convert ``value`` to a float array; reject NaN, infinity and (by default) emptiness."""
-    if isinstance(value, bool | np.bool_) or getattr(np.asarray(value), "dtype", None) == np.bool_:
+    """Convert ``value`` to a float array; reject NaN, infinity and (by default) emptiness.
+
+    None, booleans (also inside lists), complex numbers, masked values, strings that are
+    not numbers and ragged lists raise :class:`ValueError` naming ``name``.
+    """
+    if value is None:
+        raise ValueError(f"{name} must be a real number, got None")
+    if isinstance(value, bool | np.bool_) or _holds_bool(value):
         raise ValueError(f"{name} must be a real number, got a boolean {value!r}")
+    if np.ma.is_masked(value):
+        raise ValueError(f"{name} must not have masked (missing) values, got {value!r}")
     try:
-        arr = np.asarray(value, dtype=float)
+        raw = np.asarray(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a real number or an array of real numbers, got {value!r}") from None
+    if raw.dtype == np.bool_:
+        raise ValueError(f"{name} must be a real number, got a boolean {value!r}")
+    if np.iscomplexobj(raw):
+        raise ValueError(f"{name} must be a real number, got a complex value {value!r}")
+    try:
+        arr = raw.astype(float)
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a real number or an array of real numbers, "
                          f"got {value!r}") from None
@@ -33,6 +59,16 @@ def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} must be finite (no NaN or infinity), got {value!r}")
     return arr
+
+
+def _holds_bool(value) -> bool:
+    """True if a (nested) list or tuple holds a boolean, which NumPy would silently make 0 or 1."""
+    if not isinstance(value, list | tuple):
+        return False
+    types = set(map(type, value))
+    if bool in types or np.bool_ in types:
+        return True
+    return any(_holds_bool(v) for v in value) if types & {list, tuple} else False
 
 
 def check_positive(value, name: str) -> np.ndarray:
@@ -81,3 +117,70 @@ def scalar(value, name: str) -> float:
     if arr.ndim != 0:
         raise ValueError(f"{name} must be a scalar here, got an array of shape {arr.shape}")
     return float(arr)
+
+
+def _unit_text(unit: str | None) -> str:
+    return f" {unit}" if unit else ""
+
+
+def _as_scalar(value, name: str, unit: str | None) -> float:
+    """``value`` converted to ``unit`` (if given) as one finite real float."""
+    converted = value if unit is None else to_si(value, unit, name)
+    arr = as_float_array(converted, name)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a scalar, got an array of shape {arr.shape}")
+    return float(arr)
+
+
+def check_scalar_positive(value, name: str, unit: str | None = None, *, allow_zero: bool = False) -> float:
+    """One finite real number > 0 (>= 0 with ``allow_zero``), converted to ``unit`` if given.
+
+    Parameters
+    ----------
+    value : float, pint.Quantity or str
+        A number (taken to be in ``unit`` already), a pint ``Quantity`` or, when ``unit``
+        is given, a string with a unit such as ``'2nm'``.
+    name : str
+        Parameter name for the error message.
+    unit : str, optional
+        SI unit in pint syntax (``'m'``, ``'Pa'``, ``'1/m^2'``, ``''`` for dimensionless);
+        None: no unit conversion.
+    allow_zero : bool
+        Accept 0.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    ValueError
+        For a boolean, complex, non-numeric, NaN, infinite, non-scalar or out-of-range
+        value, or a quantity of the wrong dimension; the message names ``name``, the unit
+        and the valid range.
+    """
+    x = _as_scalar(value, name, unit)
+    if x < 0 or (x == 0 and not allow_zero):
+        bound = f">= 0{_unit_text(unit)} (valid range 0 <= {name} < inf)" if allow_zero else \
+            f"> 0{_unit_text(unit)} (valid range 0 < {name} < inf)"
+        raise ValueError(f"{name} must be {bound}, got {value!r}")
+    return x
+
+
+def check_optional_positive(value, name: str, unit: str | None = None, *, allow_zero: bool = False) -> float | None:
+    """None (a missing value) or :func:`check_scalar_positive` of ``value``."""
+    if value is None:
+        return None
+    x = _as_scalar(value, name, unit)
+    if x < 0 or (x == 0 and not allow_zero):
+        bound = ">= 0" if allow_zero else "> 0"
+        raise ValueError(f"{name} must be {bound}{_unit_text(unit)} or None (missing), got {value!r}")
+    return x
+
+
+def check_scalar_poisson(value, name: str = "nu") -> float:
+    """One Poisson's ratio of an isotropic elastic solid, -1 < nu < 0.5, as a float."""
+    x = _as_scalar(value, name, "")
+    if not -1.0 < x < 0.5:
+        raise ValueError(f"{name} (Poisson's ratio) must lie in (-1, 0.5), got {value!r}")
+    return x

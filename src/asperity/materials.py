@@ -47,9 +47,9 @@ import math
 from dataclasses import dataclass
 from importlib import resources
 
-from .units import to_si
+from ._validation import check_optional_positive, check_scalar_poisson, check_scalar_positive
 
-__all__ = ["Material", "material", "material_names", "material_table", "pair"]
+__all__ = ["Material", "as_material", "material", "material_names", "material_table", "pair"]
 
 #: Numeric columns of the table and their SI units.
 TABLE_UNITS = {
@@ -61,40 +61,6 @@ TABLE_UNITS = {
     "surface_energy_J_m2": "J/m^2",
     "work_of_adhesion_J_m2": "J/m^2",
 }
-
-
-def _finite(value, name: str) -> float:
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number, got {value!r}") from None
-    if not math.isfinite(x):
-        raise ValueError(f"{name} must be finite, got {value!r}")
-    return x
-
-
-def _positive(value, unit: str, name: str) -> float:
-    x = _finite(to_si(value, unit, name), name)
-    if x <= 0:
-        raise ValueError(f"{name} must be > 0 {unit} (valid range 0 < {name} < inf), got {value!r}")
-    return x
-
-
-def _optional_positive(value, unit: str, name: str, *, allow_zero: bool = False) -> float | None:
-    if value is None:
-        return None
-    x = _finite(to_si(value, unit, name), name)
-    if x < 0 or (x == 0 and not allow_zero):
-        bound = ">= 0" if allow_zero else "> 0"
-        raise ValueError(f"{name} must be {bound} {unit} or None (missing), got {value!r}")
-    return x
-
-
-def _poisson(value, name: str = "nu") -> float:
-    x = _finite(to_si(value, "", name), name)
-    if not -1.0 < x < 0.5:
-        raise ValueError(f"{name} (Poisson's ratio) must lie in (-1, 0.5), got {value!r}")
-    return x
 
 
 @dataclass(frozen=True)
@@ -150,12 +116,12 @@ class Material:
     def __post_init__(self):
         setattr_ = functools.partial(object.__setattr__, self)
         setattr_("name", str(self.name))
-        setattr_("E", _positive(self.E, "Pa", "E"))
-        setattr_("nu", _poisson(self.nu))
-        setattr_("b", _optional_positive(self.b, "m", "b"))
-        setattr_("w", _optional_positive(self.w, "J/m^2", "w", allow_zero=True))
-        setattr_("h", _optional_positive(self.h, "m", "h"))
-        setattr_("sigma0", _optional_positive(self.sigma0, "Pa", "sigma0"))
+        setattr_("E", check_scalar_positive(self.E, "E", "Pa"))
+        setattr_("nu", check_scalar_poisson(self.nu))
+        setattr_("b", check_optional_positive(self.b, "b", "m"))
+        setattr_("w", check_optional_positive(self.w, "w", "J/m^2", allow_zero=True))
+        setattr_("h", check_optional_positive(self.h, "h", "m"))
+        setattr_("sigma0", check_optional_positive(self.sigma0, "sigma0", "Pa"))
         setattr_("components", tuple(str(c) for c in self.components))
         self._check_dugdale()
 
@@ -187,12 +153,33 @@ class Material:
         return 2.0 * self.G
 
 
-def _resolve(body) -> Material:
+def as_material(body, name: str = "material") -> Material:
+    """A :class:`Material` from a Material (returned as is) or a table name (:func:`material`).
+
+    Parameters
+    ----------
+    body : Material or str
+        The body, or its name in the table (case-insensitive; pairs such as ``'Au/Au'``).
+    name : str
+        Parameter name for the error message.
+
+    Returns
+    -------
+    Material
+
+    Raises
+    ------
+    TypeError
+        If ``body`` is neither a Material nor a string.
+    ValueError
+        For a name not in the table (the message lists the known ones).
+    """
     if isinstance(body, Material):
         return body
     if isinstance(body, str):
         return material(body)
-    raise ValueError(f"a pair needs two Materials or material names, got {body!r}")
+    raise TypeError(f"{name} must be an asperity.materials.Material or a material name from the table "
+                    f"(e.g. 'Au'), got {type(body).__name__} {body!r}")
 
 
 def _pair_b(first: Material, second: Material, b):
@@ -255,7 +242,7 @@ def pair(first, second, *, w=None, b=None, h=None, name: str | None = None) -> M
     ----------
     Johnson, *Contact Mechanics* (1985) §4.2; Adams et al., Eq (2) (:math:`G^*`).
     """
-    one, two = _resolve(first), _resolve(second)
+    one, two = as_material(first, "first"), as_material(second, "second")
     g_star = 2.0 * one.G * two.G / (one.G + two.G)
     label = name or f"{one.name}/{two.name}"
     nu_eff = _check_effective_poisson(_effective_poisson(one, two), label)

@@ -448,26 +448,39 @@ def _load_pull_off(lam: float) -> BranchPoint:
     return BranchPoint(t=t, A=float(A), P=float(P), delta=float(D))
 
 
-def md_lambda(sigma0, w, R, E_star):
+def md_lambda(R, w, E_star, sigma0):
     r"""Maugis parameter :math:`\lambda = 2\sigma_0 (R/\pi w K^2)^{1/3}`, :math:`K = \tfrac43E^*` (Eq 14).
+
+    The arguments come in the order of the regime family
+    (:func:`asperity.regimes.tabor_parameter` ``(R, w, E_star, z0)``,
+    :func:`asperity.regimes.maugis_parameter` ``(R, w, E_star, sigma0)``).
+
+    .. math::
+
+        \lambda = 2\sigma_0\Big(\frac{R}{\pi w K^2}\Big)^{1/3},\qquad K = \tfrac43 E^*
 
     Parameters
     ----------
-    sigma0 : array_like
-        Dugdale adhesive stress (Pa), :math:`\sigma_0 = w/h`.
-    w : array_like
-        Work of adhesion (J/m^2).
     R : array_like
-        Sphere radius (m).
+        Sphere radius :math:`R` (m), > 0.
+    w : array_like
+        Work of adhesion :math:`w` (J/m^2), > 0.
     E_star : array_like
-        Composite Young's modulus (Pa).
+        Composite Young's modulus :math:`E^*` (Pa), > 0.
+    sigma0 : array_like
+        Dugdale adhesive stress :math:`\sigma_0 = w/h` (Pa), > 0.
+
+    Returns
+    -------
+    ndarray
+        :math:`\lambda` (dimensionless), broadcast over the inputs (0-d for scalars).
 
     References
     ----------
     Maugis (1992); Adams et al., Eq (14).
     """
-    sigma0 = check_positive(sigma0, "sigma0")
-    w = check_positive(w, "w")
     R = check_positive(R, "R")
+    w = check_positive(w, "w")
     K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    sigma0 = check_positive(sigma0, "sigma0")
     return 2.0 * sigma0 * np.cbrt(R / (np.pi * w * K * K))

@@ -17,9 +17,14 @@ onto an equivalent body on a rigid flat (see :mod:`asperity.materials`).
 Every physical input accepts a float in SI units or a pint ``Quantity``
 (``pip install 'asperity[units]'``).
 
-Regime helpers: :func:`tabor_parameter`, :func:`maugis_parameter`,
-:func:`adhesion_regime` (Johnson-Greenwood adhesion map) and
-:func:`fuller_tabor_parameter` (roughness versus adhesion).
+This module holds the contact (:class:`PhysicalContact`) and its results
+(:class:`PhysicalCurve`, :class:`PhysicalPullOff`, columns in :data:`PHYSICAL_COLUMNS`).
+The surface lives in :mod:`asperity.surface` (:class:`~asperity.surface.Surface`,
+:func:`~asperity.surface.surface_from_groups`) and the regime helpers in
+:mod:`asperity.regimes` (:func:`~asperity.regimes.tabor_parameter`,
+:func:`~asperity.regimes.maugis_parameter`, :func:`~asperity.regimes.adhesion_regime`,
+:func:`~asperity.regimes.fuller_tabor_parameter`); both are re-exported here, so
+``from asperity.physical import Surface`` keeps working.
 
 References
 ----------
@@ -38,14 +43,15 @@ import numpy as np
 
 from . import groups
 from ._csv import columns_to_csv, columns_to_dataframe
-from ._validation import as_float_array, check_nonnegative, check_positive
+from ._validation import as_float_array, check_nonnegative, check_positive, check_scalar_positive
 from .curves import CurveResult, Model, PullOff
 from .friction_stress import ConstantShear, FrictionLaw
 from .heights import GAUSSIAN, HeightDistribution
-from .materials import Material, material
-from .maugis_dugdale import md_lambda
+from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
 from .quantities import CURVE_COLUMNS
+from .regimes import adhesion_regime, fuller_tabor_parameter, maugis_parameter, tabor_parameter
+from .surface import Surface, surface_from_groups
 from .units import to_si
 
 __all__ = [
@@ -71,61 +77,6 @@ def _out(x):
     """A 0-d result as float, otherwise the array."""
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
-
-
-def _scalar_positive(value, unit: str, name: str) -> float:
-    x = check_positive(to_si(value, unit, name), name)
-    if x.ndim != 0:
-        raise ValueError(f"{name} must be a scalar, got an array of shape {x.shape}")
-    return float(x)
-
-
-@dataclass(frozen=True)
-class Surface:
-    r"""A Greenwood-Williamson rough surface in SI units.
-
-    Parameters
-    ----------
-    sigma_s : float or pint.Quantity
-        Standard deviation of summit heights (m), > 0.
-    R : float or pint.Quantity
-        Summit radius of curvature (m), > 0.
-    eta : float or pint.Quantity
-        Summit density (1/m^2), > 0.
-    area : float or pint.Quantity
-        Nominal contact area (m^2), > 0.
-
-    Attributes
-    ----------
-    N : float
-        Number of summits :math:`\eta A` in the nominal area.
-    alpha : float
-        Roughness parameter :math:`(\sigma_s/R)^{1/2}` (Eq 7).
-
-    Examples
-    --------
-    >>> Surface(sigma_s=2e-9, R=1e-6, eta=1e12, area=1e-6).N
-    1000000.0
-    """
-
-    sigma_s: float
-    R: float
-    eta: float
-    area: float
-
-    def __post_init__(self):
-        for name, unit in (("sigma_s", "m"), ("R", "m"), ("eta", "1/m^2"), ("area", "m^2")):
-            object.__setattr__(self, name, _scalar_positive(getattr(self, name), unit, name))
-
-    @property
-    def N(self) -> float:
-        """Number of asperities (summits) in the nominal area."""
-        return self.eta * self.area
-
-    @property
-    def alpha(self) -> float:
-        """Surface roughness parameter (sigma_s/R)^(1/2) (Eq 7)."""
-        return math.sqrt(self.sigma_s / self.R)
 
 
 @dataclass(frozen=True)
@@ -211,17 +162,16 @@ class PhysicalContact:
 
     Examples
     --------
-    >>> from asperity.materials import material
-    >>> c = PhysicalContact(material("Au"), Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False)
+    >>> c = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False)
     >>> round(c.alpha, 4), round(c.beta, 1)
     (0.0447, 155.0)
     """
 
     def __init__(self, material: Material | str, surface: Surface, *, h=None, friction=None,
                  adhesion: bool = True, heights: HeightDistribution = GAUSSIAN):
-        self.material = _as_material(material)
+        self.material = as_material(material)
         if not isinstance(surface, Surface):
-            raise ValueError(f"surface must be an asperity.physical.Surface, got {surface!r}")
+            raise ValueError(f"surface must be an asperity.surface.Surface, got {surface!r}")
         self.surface = surface
         if self.material.b is None:
             raise ValueError(f"material {self.material.name!r} has no Burgers vector b (m); "
@@ -229,14 +179,14 @@ class PhysicalContact:
         self.adhesion = bool(adhesion)
         self.w = _adhesion_w(self.material, self.adhesion)
         self.h = self.material.b if h is None and self.material.h is None else \
-            _scalar_positive(self.material.h if h is None else h, "m", "h")
+            check_scalar_positive(self.material.h if h is None else h, "h", "m")
         self.friction = self._friction_law(friction)
         self.heights = heights
 
     def _friction_law(self, friction) -> FrictionLaw | None:
         if friction is None or isinstance(friction, FrictionLaw):
             return friction
-        tau = _scalar_positive(friction, "Pa", "friction (shear strength tau)")
+        tau = check_scalar_positive(friction, "friction (shear strength tau)", "Pa")
         return ConstantShear(tau / self.G_star)
 
     # -- material and surface -----------------------------------------------------------
@@ -370,14 +320,6 @@ class PhysicalContact:
                              nominal_area=self.surface.area)
 
 
-def _as_material(body) -> Material:
-    if isinstance(body, Material):
-        return body
-    if isinstance(body, str):
-        return material(body)
-    raise ValueError(f"material must be an asperity.materials.Material or a table name, got {body!r}")
-
-
 def _adhesion_w(body: Material, adhesion: bool) -> float:
     if not adhesion:
         return 0.0
@@ -387,33 +329,7 @@ def _adhesion_w(body: Material, adhesion: bool) -> float:
     return body.w
 
 
-# -- inverse conversions ---------------------------------------------------------------------
-
-def surface_from_groups(alpha, beta, b, eta, area) -> Surface:
-    r"""The :class:`Surface` with given :math:`\alpha`, :math:`\beta` (Eq 20).
-
-    .. math:: \sigma_s = \alpha\beta b,\qquad R = \beta b/\alpha
-
-    Parameters
-    ----------
-    alpha, beta : float
-        Roughness and friction-regime parameters (Eq 7), > 0.
-    b : float or pint.Quantity
-        Burgers vector (m), > 0.
-    eta : float or pint.Quantity
-        Summit density (1/m^2), > 0.
-    area : float or pint.Quantity
-        Nominal area (m^2), > 0.
-
-    References
-    ----------
-    Adams et al., Eq (20).
-    """
-    alpha = _scalar_positive(alpha, "", "alpha")
-    beta = _scalar_positive(beta, "", "beta")
-    b = _scalar_positive(b, "m", "b")
-    return Surface(sigma_s=alpha * beta * b, R=beta * b / alpha, eta=eta, area=area)
-
+# -- inverse conversion --------------------------------------------------------------------
 
 def work_of_adhesion_from_gamma(gamma, E_star, b):
     r"""Work of adhesion :math:`w = \gamma E^* b` (J/m^2), the inverse of Eq (16).
@@ -430,157 +346,15 @@ def work_of_adhesion_from_gamma(gamma, E_star, b):
     References
     ----------
     Adams et al., Eq (16).
+
+    .. math:: w = \gamma E^* b
+
+    Returns
+    -------
+    float or ndarray
+        :math:`w` (J/m^2), broadcast over the inputs.
     """
     gamma = check_nonnegative(to_si(gamma, "", "gamma"), "gamma")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
     b = check_positive(to_si(b, "m", "b"), "b")
     return _out(gamma * E_star * b)
-
-
-# -- adhesion regimes ------------------------------------------------------------------------
-
-def tabor_parameter(R, w, E_star, z0):
-    r"""Tabor parameter :math:`\mu_T = (R w^2 / E^{*2} z_0^3)^{1/3}`.
-
-    The ratio of the elastic neck height at pull-off to the range of surface forces:
-    small values mean DMT-like (stiff, long-range), large values JKR-like contact.
-
-    Parameters
-    ----------
-    R : array_like or pint.Quantity
-        Sphere (summit) radius (m), > 0.
-    w : array_like or pint.Quantity
-        Work of adhesion (J/m^2), > 0.
-    E_star : array_like or pint.Quantity
-        Composite Young's modulus (Pa), > 0.
-    z0 : array_like or pint.Quantity
-        Equilibrium spacing of the surface-force law (m), > 0 (about 0.2-0.4 nm).
-
-    Returns
-    -------
-    float or ndarray
-        :math:`\mu_T` (dimensionless), broadcast over the inputs.
-
-    Notes
-    -----
-    For a Lennard-Jones force law the Dugdale model with the same maximum stress and
-    work of adhesion gives :math:`\lambda \approx 1.16\,\mu_T` (Johnson & Greenwood 1997).
-
-    References
-    ----------
-    .. [1] D. Tabor, J. Colloid Interface Sci. 58 (1977) 2-13.
-    .. [2] K. L. Johnson, J. A. Greenwood, J. Colloid Interface Sci. 192 (1997) 326-333.
-    """
-    R = check_positive(to_si(R, "m", "R"), "R")
-    w = check_positive(to_si(w, "J/m^2", "w"), "w")
-    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
-    z0 = check_positive(to_si(z0, "m", "z0"), "z0")
-    return _out(np.cbrt(R * w**2 / (E_star**2 * z0**3)))
-
-
-def maugis_parameter(R, w, E_star, sigma0):
-    r"""Maugis parameter :math:`\lambda = 2\sigma_0 (R/\pi w K^2)^{1/3}`, :math:`K = \tfrac43E^*` (Eq 14).
-
-    Parameters
-    ----------
-    R : array_like or pint.Quantity
-        Sphere (summit) radius (m), > 0.
-    w : array_like or pint.Quantity
-        Work of adhesion (J/m^2), > 0.
-    E_star : array_like or pint.Quantity
-        Composite Young's modulus (Pa), > 0.
-    sigma0 : array_like or pint.Quantity
-        Dugdale stress (Pa), > 0; :math:`\sigma_0 = w/h` for a Dugdale range ``h``.
-
-    Returns
-    -------
-    float or ndarray
-        :math:`\lambda` (dimensionless).
-
-    References
-    ----------
-    .. [1] D. Maugis, J. Colloid Interface Sci. 150 (1992) 243-269.
-    .. [2] Adams et al., Eq (14); :func:`asperity.maugis_dugdale.md_lambda`.
-    """
-    return _out(md_lambda(to_si(sigma0, "Pa", "sigma0"), to_si(w, "J/m^2", "w"), to_si(R, "m", "R"),
-                          to_si(E_star, "Pa", "E_star")))
-
-
-def adhesion_regime(lam, *, dmt_below: float = 0.1, jkr_above: float = 5.0):
-    r"""Name the single-asperity adhesion regime of a Maugis parameter.
-
-    ``'DMT'`` for :math:`\lambda <` ``dmt_below``, ``'JKR'`` for :math:`\lambda >`
-    ``jkr_above``, ``'Maugis-Dugdale'`` in between (boundaries included).
-
-    Parameters
-    ----------
-    lam : array_like
-        Maugis parameter :math:`\lambda \ge 0` (e.g. :attr:`PhysicalContact.lam` or
-        :func:`maugis_parameter`).
-    dmt_below, jkr_above : float
-        Thresholds, 0 < dmt_below < jkr_above.  Defaults 0.1 and 5 follow the
-        Johnson-Greenwood adhesion map, where the DMT and JKR solutions are adequate
-        below and above them; the full map also depends on the load, so these are the
-        load-independent bounds.
-
-    Returns
-    -------
-    str or ndarray of str
-        A string for a scalar ``lam``, otherwise an array of the same shape.
-
-    References
-    ----------
-    .. [1] K. L. Johnson, J. A. Greenwood, "An adhesion map for the contact of elastic
-       spheres", J. Colloid Interface Sci. 192 (1997) 326-333.
-    """
-    lam = check_nonnegative(lam, "lam")
-    lo = float(check_positive(dmt_below, "dmt_below"))
-    hi = float(check_positive(jkr_above, "jkr_above"))
-    if not lo < hi:
-        raise ValueError(f"dmt_below must be < jkr_above, got {lo:g} and {hi:g}")
-    names = np.where(lam < lo, "DMT", np.where(lam > hi, "JKR", "Maugis-Dugdale"))
-    return str(names) if names.ndim == 0 else names
-
-
-def fuller_tabor_parameter(sigma, R, w, E_star):
-    r"""Fuller-Tabor adhesion parameter :math:`\theta = E^*\sigma^{3/2}/(R^{1/2} w)`.
-
-    The elastic force pushing one summit of radius :math:`R` a depth :math:`\sigma`
-    into the flat, :math:`\tfrac43E^*R^{1/2}\sigma^{3/2}`, over its adhesive force scale
-    :math:`\pi w R`, is :math:`\tfrac{4}{3\pi}\theta`.  In Fuller & Tabor's GW + JKR
-    analysis the pull-off force of the rough contact, relative to a smooth one, falls
-    steeply as :math:`\theta` grows: roughness defeats adhesion when the elastic term wins.
-
-    Parameters
-    ----------
-    sigma : array_like or pint.Quantity
-        Standard deviation of summit heights (m), > 0.
-    R : array_like or pint.Quantity
-        Summit radius (m), > 0.
-    w : array_like or pint.Quantity
-        Work of adhesion :math:`\Delta\gamma` (J/m^2), > 0.
-    E_star : array_like or pint.Quantity
-        Composite (plane-strain) modulus :math:`[(1-\nu_1^2)/E_1+(1-\nu_2^2)/E_2]^{-1}` (Pa), > 0.
-
-    Returns
-    -------
-    float or ndarray
-        :math:`\theta` (dimensionless).
-
-    Notes
-    -----
-    Convention: :math:`E^*` is the composite modulus of this library (not the JKR
-    :math:`K = \tfrac43E^*`) and :math:`w` the work of adhesion.  Later papers write the
-    parameter with other moduli or prefactors (e.g. the :math:`\tfrac{4}{3\pi}\theta`
-    above); thresholds are only comparable within one convention.
-
-    References
-    ----------
-    .. [1] K. N. G. Fuller, D. Tabor, "The effect of surface roughness on the adhesion of
-       elastic solids", Proc. R. Soc. A 345 (1975) 327-342.
-    """
-    sigma = check_positive(to_si(sigma, "m", "sigma"), "sigma")
-    R = check_positive(to_si(R, "m", "R"), "R")
-    w = check_positive(to_si(w, "J/m^2", "w"), "w")
-    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
-    return _out(E_star * sigma**1.5 / (np.sqrt(R) * w))

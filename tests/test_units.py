@@ -1,0 +1,57 @@
+"""asperity.units: pint quantities and unit strings to SI floats."""
+
+import numpy as np
+import pint
+import pytest
+
+from asperity import units
+
+u = pint.UnitRegistry()
+
+
+def test_to_si_passes_numbers_and_converts_quantities():
+    assert units.to_si(2e-9, "m", "sigma_s") == 2e-9
+    assert units.to_si(2 * u.nm, "m", "sigma_s") == pytest.approx(2e-9, rel=1e-15)
+    assert units.to_si(79 * u.GPa, "Pa", "E") == pytest.approx(79e9, rel=1e-15)
+    np.testing.assert_allclose(units.to_si([1, 2] * u.mN, "N", "P"), [1e-3, 2e-3], rtol=1e-15)
+    assert units.to_si(0.3 * u.dimensionless, "", "nu") == pytest.approx(0.3)
+
+
+def test_to_si_wrong_dimension_names_parameter_and_unit():
+    with pytest.raises(ValueError, match=r"sigma_s must have units compatible with m"):
+        units.to_si(2 * u.GPa, "m", "sigma_s")
+
+
+@pytest.mark.parametrize("text, unit, expected", [
+    ("2nm", "m", 2e-9), ("1um", "m", 1e-6), ("1e12/m^2", "1/m^2", 1e12), ("1mm^2", "m^2", 1e-6),
+    ("1mN", "N", 1e-3), ("79GPa", "Pa", 79e9), ("1.2J/m^2", "J/m^2", 1.2), (" 2 nm ", "m", 2e-9),
+    ("0.3", "", 0.3),
+])
+def test_parse_quantity(text, unit, expected):
+    assert units.parse_quantity(text, unit, "x") == pytest.approx(expected, rel=1e-14)
+
+
+def test_parse_quantity_bare_number_needs_a_unit():
+    with pytest.raises(ValueError, match=r"sigma_s needs a unit compatible with m"):
+        units.parse_quantity("2", "m", "sigma_s")
+    assert units.parse_quantity("2e-9", "m", "sigma_s", require_unit=False) == 2e-9
+
+
+@pytest.mark.parametrize("text", ["2 GPa", "2 furlongs_per_bogus", "nm nm (", ""])
+def test_parse_quantity_rejects_bad_strings(text):
+    with pytest.raises(ValueError, match="sigma_s"):
+        units.parse_quantity(text, "m", "sigma_s")
+
+
+def test_parse_quantity_without_pint(monkeypatch):
+    def missing():
+        raise ImportError("no pint")
+
+    monkeypatch.setattr(units, "unit_registry", missing)
+    with pytest.raises(ValueError, match=r"asperity\[units\]"):
+        units.parse_quantity("2nm", "m", "sigma_s")
+    assert units.parse_quantity("2e-9", "m", "sigma_s", require_unit=False) == 2e-9
+
+
+def test_to_si_parses_strings():
+    assert units.to_si("79GPa", "Pa", "E") == pytest.approx(79e9)

@@ -1,0 +1,284 @@
+"""asperity.topography.read: files to SurfaceTopography objects in metres."""
+
+import re
+import sys
+import warnings
+
+import numpy as np
+import pint
+import pytest
+
+from asperity.topography import analyse_surface, read_topography
+
+from .synthetic import DX, ST, synthetic_map
+
+UREG = pint.UnitRegistry()
+
+
+@pytest.fixture()
+def small_map():
+    heights = np.random.default_rng(4).standard_normal((12, 10))  # nm
+    return heights, ST.Topography(heights, (1.2, 1.0), unit="µm")
+
+
+def _check_map(topo, heights, height_scale=1e-9, sizes=(1.2e-6, 1.0e-6)):
+    assert topo.unit == "m"
+    assert topo.nb_grid_pts == heights.shape
+    assert tuple(topo.physical_sizes) == pytest.approx(sizes, rel=1e-12)
+    np.testing.assert_allclose(topo.heights(), heights * height_scale, rtol=1e-12)
+
+
+def test_read_handwritten_text_matrix(tmp_path):
+    heights = np.arange(72.0).reshape(8, 9)  # rows along y, columns along x
+    path = tmp_path / "afm.txt"
+    path.write_text("# Channel: Height\n# Width: 9 µm\n# Height: 8 µm\n# Value units: nm\n"
+                    + "\n".join(" ".join(f"{v:g}" for v in row) for row in heights) + "\n", encoding="utf-8")
+    _check_map(read_topography(path), heights.T, sizes=(9e-6, 8e-6))
+
+
+@pytest.mark.parametrize(("writer", "suffix"), [("to_matrix", "txt"), ("to_x3p", "x3p"), ("to_netcdf", "nc")])
+def test_read_written_formats(tmp_path, small_map, writer, suffix):
+    heights, topo = small_map
+    path = tmp_path / f"map.{suffix}"
+    getattr(topo.scale(1e-3), writer)(str(path))  # heights in µm, as the unit says
+    _check_map(read_topography(path), heights)
+
+
+def test_read_npy_needs_sizes_and_unit(tmp_path, small_map):
+    heights, _ = small_map
+    path = tmp_path / "map.npy"
+    np.save(path, heights)
+    with pytest.raises(ValueError, match=re.escape(str(path)) + ".*physical_sizes="):
+        read_topography(path)
+    with pytest.raises(ValueError, match="unit="):
+        read_topography(path, physical_sizes=(1.2, 1.0))
+    # physical_sizes are metres (or lengths with units); unit is the unit of the stored heights
+    _check_map(read_topography(path, physical_sizes=(1.2e-6, 1.0e-6), unit="nm"), heights)
+    _check_map(read_topography(path, physical_sizes=("1.2um", "1000 nm"), unit="nm"), heights)
+    _check_map(read_topography(path, physical_sizes=np.array([1.2, 1.0]) * UREG.um, unit="nm"), heights)
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    ({"physical_sizes": (1, 1), "unit": "V"}, "not a length unit"),
+    ({"physical_sizes": (1, 1), "unit": "furlong"}, "not a length unit"),
+    ({"physical_sizes": (1, 1, 1), "unit": "nm"}, "2 positive number"),
+    ({"physical_sizes": (1, -1), "unit": "nm"}, "2 positive number"),
+    ({"physical_sizes": (1, "a"), "unit": "nm"}, "2 positive number"),
+    ({"physical_sizes": (1, 1), "unit": "nm", "channel_index": 3}, "no channel 3"),
+])
+def test_bad_read_arguments(tmp_path, small_map, kwargs, message):
+    path = tmp_path / "map.npy"
+    np.save(path, small_map[0])
+    with pytest.raises(ValueError, match=re.escape(str(path)) + ".*" + message):
+        read_topography(path, **kwargs)
+
+
+def test_file_metadata_cannot_be_overridden(tmp_path, small_map):
+    _, topo = small_map
+    path = tmp_path / "map.txt"
+    topo.to_matrix(str(path))
+    with pytest.raises(ValueError, match="already stores the unit"):
+        read_topography(path, unit="nm")
+    with pytest.raises(ValueError, match="already stores the scan size"):
+        read_topography(path, physical_sizes=(1, 1))
+
+
+def test_read_line_scan(tmp_path):
+    heights = np.sin(np.linspace(0, 20, 200))  # nm
+    path = tmp_path / "profile.txt"
+    ST.UniformLineScan(heights, 50.0, unit="µm").scale(1e-3).to_matrix(str(path))
+    line = read_topography(path)
+    assert line.dim == 1 and line.unit == "m"
+    assert tuple(line.physical_sizes) == pytest.approx((50e-6,))
+    np.testing.assert_allclose(line.heights(), heights * 1e-9, rtol=1e-12)
+    result = analyse_surface(path)
+    assert result.dim == 1 and result.source == str(path)
+    assert any("line scan" in w for w in result.warnings)
+
+
+def test_undefined_data(tmp_path, small_map):
+    heights, _ = small_map
+    holes = heights.copy()
+    holes[4, 5] = np.nan
+    path = tmp_path / "holes.txt"
+    np.savetxt(path, holes.T, header="Width: 1.2 um\nHeight: 1.0 um\nValue units: nm")
+    with pytest.raises(ValueError, match=re.escape(str(path)) + ".*1 of 120 heights are undefined"):
+        read_topography(path)
+    filled = read_topography(path, fill_undefined=True)
+    assert not filled.has_undefined_data
+    # harmonic fill of one hole on a square grid: the mean of its 4 neighbours
+    neighbours = heights[3, 5] + heights[5, 5] + heights[4, 4] + heights[4, 6]
+    assert filled.heights()[4, 5] == pytest.approx(neighbours / 4 * 1e-9, rel=1e-6)
+
+
+@pytest.mark.parametrize("content", [None, b"", np.random.default_rng(5).bytes(3001),
+                                     b"this is not\na topography\n"])
+def test_bad_files_raise_value_error_naming_file(tmp_path, content):
+    path = tmp_path / "bad.dat"
+    if content is not None:
+        path.write_bytes(content)
+    with pytest.raises(ValueError, match=re.escape(str(path))) as info:
+        read_topography(path)
+    assert info.value.__cause__ is None and (info.value.__context__ is None or info.value.__suppress_context__)
+    with pytest.raises(ValueError, match=re.escape(str(path))):
+        analyse_surface(path)
+
+
+def test_reader_warnings_are_reissued_with_file_name(tmp_path, small_map, monkeypatch):
+    _, topo = small_map
+    path = tmp_path / "map.txt"
+    topo.to_matrix(str(path))
+    original = ST.open_topography
+
+    def noisy(fobj, *args, **kwargs):
+        warnings.warn("odd header", UserWarning, stacklevel=2)
+        return original(fobj, *args, **kwargs)
+
+    monkeypatch.setattr(ST, "open_topography", noisy)
+    with pytest.warns(UserWarning, match=re.escape(f"{path}: odd header")):
+        read_topography(path)
+
+
+def test_missing_surface_topography(monkeypatch, tmp_path):
+    path = tmp_path / "map.npy"
+    np.save(path, np.zeros((8, 8)))
+    monkeypatch.setitem(sys.modules, "SurfaceTopography", None)
+    with pytest.raises(ImportError, match="reading measured surfaces needs SurfaceTopography: "
+                                          + re.escape("pip install 'asperity[topography]'")):
+        read_topography(path)
+
+
+# -- units: sizes in metres, `unit` = unit of the stored heights (issue #7) -------------------
+
+HEIGHT_UNITS = {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "μm": 1e-6, "nm": 1e-9, "Å": 1e-10, "pm": 1e-12}
+
+
+@pytest.fixture(scope="module")
+def scan():
+    """A 64 x 48 rough map [m] (non-square, so swapped axes would show) and its sizes [m]."""
+    heights = synthetic_map(64, roll_px=32, min_px=4, seed=3)[0][:, :48]
+    return heights, (64 * DX, 48 * DX)
+
+
+def _write(path, heights):
+    """Heights as stored by a plain text matrix (rows along y) or a .npy file, no metadata."""
+    if path.suffix == ".npy":
+        np.save(path, heights)
+    else:
+        np.savetxt(path, heights.T)
+    return path
+
+
+def _gw(result):
+    return [(p.sigma_s, p.R, p.eta) for p in (result.spectral, result.detected)]
+
+
+@pytest.mark.parametrize("suffix", ["txt", "npy"])
+@pytest.mark.parametrize("unit", list(HEIGHT_UNITS))
+def test_heights_in_any_unit_equal_the_surface_in_metres(tmp_path, scan, suffix, unit):
+    """The same scan stored in `unit`, sizes in um: sigma_s, R, eta as for the scan in metres."""
+    heights, sizes = scan
+    reference = analyse_surface(ST.Topography(heights, sizes, unit="m"))
+    in_metres = analyse_surface(_write(tmp_path / f"m.{suffix}", heights), physical_sizes=sizes, unit="m")
+    scaled = _write(tmp_path / f"scaled.{suffix}", heights / HEIGHT_UNITS[unit])
+    um = ("0.64um", "0.48 um")
+    for result in (in_metres, analyse_surface(scaled, physical_sizes=um, unit=unit),
+                   analyse_surface(scaled, physical_sizes=(0.64 * UREG.um, 480 * UREG.nm), unit=f" {unit} ")):
+        assert result.physical_sizes == pytest.approx(sizes, rel=1e-14)
+        assert result.pixel_size == pytest.approx((DX, DX), rel=1e-14)
+        np.testing.assert_allclose(_gw(result), _gw(reference), rtol=1e-9)
+    topo = read_topography(scaled, physical_sizes=um, unit=unit)
+    assert topo.unit == "m" and topo.nb_grid_pts == (64, 48)
+    np.testing.assert_allclose(topo.heights(), heights, rtol=1e-12)
+
+
+def test_sizes_are_converted_to_a_unit_the_file_stores(tmp_path, scan):
+    """A text file with 'Value units: nm' but no sizes: physical_sizes (metres) go into nm."""
+    heights, sizes = scan
+    path = tmp_path / "nm.txt"
+    np.savetxt(path, heights.T * 1e9, header="Value units: nm")
+    topo = read_topography(path, physical_sizes=sizes)
+    assert tuple(topo.physical_sizes) == pytest.approx(sizes, rel=1e-14)
+    np.testing.assert_allclose(topo.heights(), heights, rtol=1e-12)
+    with pytest.raises(ValueError, match="already stores the unit 'nm'"):
+        read_topography(path, physical_sizes=sizes, unit="nm")
+
+
+def test_one_size_means_a_square_map(tmp_path):
+    path = _write(tmp_path / "square.npy", np.random.default_rng(8).standard_normal((16, 16)))
+    for sizes in ("2um", ("2um",), 2e-6, [2e-6]):
+        assert tuple(read_topography(path, physical_sizes=sizes, unit="nm").physical_sizes) == \
+            pytest.approx((2e-6, 2e-6), rel=1e-14)
+
+
+def test_line_scan_sizes(tmp_path):
+    path = _write(tmp_path / "line.npy", np.sin(np.linspace(0, 30, 300)))
+    for sizes in ("30um", ("30um",), 3e-5):
+        line = read_topography(path, physical_sizes=sizes, unit="nm")
+        assert line.dim == 1 and tuple(line.physical_sizes) == pytest.approx((3e-5,), rel=1e-14)
+    with pytest.raises(ValueError, match=r"physical_sizes must be 1 positive number\(s\) of metres for this line"):
+        read_topography(path, physical_sizes=("30um", "30um"), unit="nm")
+
+
+@pytest.mark.parametrize(("kwargs", "error", "message"), [
+    ({"physical_sizes": ("1um", "1 GPa"), "unit": "nm"}, ValueError, "physical_sizes must have units compatible"),
+    ({"physical_sizes": ("1um", "1"), "unit": "nm"}, ValueError, "needs a unit"),
+    ({"physical_sizes": (True, 1e-6), "unit": "nm"}, ValueError, "boolean"),
+    ({"physical_sizes": (1e-6, float("nan")), "unit": "nm"}, ValueError, "finite"),
+    ({"physical_sizes": None, "unit": "nm"}, ValueError, "does not store the scan size"),
+    ({"physical_sizes": (1e-6, 1e-6), "unit": 1e-9}, TypeError, "unit must be a string"),
+    ({"physical_sizes": (1e-6, 1e-6), "unit": "cm"}, ValueError, "'cm' is not a length unit; use one of m, mm"),
+    ({"physical_sizes": (1e-6, 1e-6), "unit": "nm", "channel_index": True}, ValueError, "channel_index"),
+])
+def test_bad_sizes_and_units(tmp_path, kwargs, error, message):
+    path = _write(tmp_path / "map.npy", np.random.default_rng(9).standard_normal((10, 10)))
+    with pytest.raises(error, match=message):
+        read_topography(path, **kwargs)
+
+
+# -- refused files ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize(("array", "message"), [
+    (np.zeros((0,)), r"the .npy array is empty \(shape \(0,\)\)"),
+    (np.zeros((0, 0)), "the .npy array is empty"),
+    (np.zeros((16, 0)), "the .npy array is empty"),
+    (np.array(3.0), r"the .npy array is 0-d \(shape \(\)\)"),
+    (np.zeros((4, 4, 4)), r"the .npy array is 3-d \(shape \(4, 4, 4\)\)"),
+    (np.ones((10, 10)) * 1j, "the .npy array holds complex128, not real numbers"),
+    (np.array([[1, "a"]] * 9, dtype=object), "the .npy array holds object, not real numbers"),
+    (np.ones((10, 10), dtype=bool), "the .npy array holds bool, not real numbers"),
+    (np.ones((2, 10)), r"too few points for summit statistics: grid \(2, 10\); need at least 8"),
+    (np.ones(7), r"too few points .* grid \(7,\)"),
+])
+def test_degenerate_npy_files(tmp_path, array, message):
+    path = tmp_path / "bad.npy"
+    np.save(path, array, allow_pickle=True)
+    with pytest.raises(ValueError, match=re.escape(str(path)) + ": " + message):
+        read_topography(path, physical_sizes=1e-6, unit="nm")
+    with pytest.raises(ValueError, match=re.escape(str(path)) + ": " + message):
+        analyse_surface(path, physical_sizes=1e-6, unit="nm")
+
+
+def test_corrupt_npy_header(tmp_path):
+    path = tmp_path / "bad.npy"
+    path.write_bytes(b"\x93NUMPY\x01\x00garbage that is not a header")
+    with pytest.raises(ValueError, match=re.escape(str(path)) + ": not a valid .npy file"):
+        read_topography(path, physical_sizes=1e-6, unit="nm")
+
+
+def test_file_matched_only_by_its_size_is_refused(tmp_path):
+    """SRTM .hgt tiles have no header: any file of 2 n^2 bytes matches; only *.hgt is taken as one."""
+    path = tmp_path / "scan.bin"
+    path.write_bytes(np.random.default_rng(6).bytes(2 * 16 * 16))
+    with pytest.raises(ValueError, match=re.escape(str(path)) + ": not a readable topography file .*hgt"):
+        read_topography(path)
+
+
+def test_directory_and_non_path(tmp_path):
+    with pytest.raises(ValueError, match=re.escape(str(tmp_path)) + ": is a directory"):
+        read_topography(tmp_path)
+    with pytest.raises(ValueError, match="is a directory"):
+        analyse_surface(str(tmp_path))
+    for bad in (3, None, b"scan.npy", ["scan.npy"], np.zeros((8, 8))):
+        with pytest.raises(TypeError, match="path must be a str or os.PathLike"):
+            read_topography(bad)
