@@ -30,7 +30,7 @@ def test_surface_command(capsys, tmp_path, scan):
     got = json.loads(out)
     ref = analyse_surface(path, material=material("Au")).to_dict()
     for method in ("spectral", "detected"):
-        for key in ("sigma_s", "radius", "density"):
+        for key in ("sigma_s", "R", "eta"):
             assert got[method][key] == pytest.approx(ref[method][key], rel=1e-15)
     assert got["groups"]["spectral"]["beta"] == pytest.approx(ref["groups"]["spectral"]["beta"], rel=1e-15)
     code, out, _ = run(capsys, "surface", str(path), "--b", "0.3nm", "--format", "table")

@@ -125,12 +125,9 @@ class SummitParameters:
     def to_dict(self) -> dict[str, Any]:
         """Plain ``float``/``int``/``str``/None dictionary, ready for strict JSON.
 
-        Keys are the field names; ``'radius'`` and ``'density'`` repeat ``'R'`` and
-        ``'eta'`` for one release (deprecated).
+        Keys are the field names (``'sigma_s'``, ``'R'``, ``'eta'``, ...).
         """
-        out = {k: plain(v) for k, v in asdict(self).items()}
-        out["radius"], out["density"] = out["R"], out["eta"]
-        return out
+        return {k: plain(v) for k, v in asdict(self).items()}
 
 
 def plain(value):
