@@ -83,8 +83,7 @@ class SummitParameters:
     Notes
     -----
     ``radius`` and ``density`` are deprecated read-only aliases of ``R`` and ``eta``
-    (they warn with :class:`DeprecationWarning`); :meth:`to_dict` still carries the keys
-    ``'radius'`` and ``'density'`` beside ``'R'`` and ``'eta'`` for this release.
+    (they warn with :class:`DeprecationWarning`).
     """
 
     sigma_s: float
