@@ -23,7 +23,7 @@ from . import groups
 from ._validation import as_float_array, check_nonnegative, check_poisson, check_positive
 from .friction_stress import FrictionLaw, HurtadoKim
 from .hertz import hertz_force, hertz_radius
-from .maugis_dugdale import LAMBDA_RANGE, _curve, _t_of_radius, md_branch_end, md_solve
+from .maugis_dugdale import A_MAX, LAMBDA_RANGE, md_branch_end, md_curve, md_solve, md_t_of_radius
 
 __all__ = ["ModelParameters", "AsperityLaw"]
 
@@ -132,11 +132,12 @@ class AsperityLaw:
         if not p.adhesive:
             return tuple(sorted((radii / p.beta) ** 2))
         targets = radii * self.A_hat
-        targets = targets[targets > self.end.A]  # radii below the branch end never occur
+        # Radii below the branch end never occur; those beyond A_MAX lie past any penetration tabulated.
+        targets = targets[(targets > self.end.A) & (targets <= A_MAX)]
         if targets.size == 0:
             return ()
-        t = _t_of_radius(targets, self.lam)
-        return tuple(sorted(self.delta_hat * _curve(t, self.lam)[2]))
+        t = md_t_of_radius(targets, self.lam)
+        return tuple(sorted(self.delta_hat * md_curve(t, self.lam)[2]))
 
     def evaluate(self, u_bar):
         """Contact radius :math:`\\bar a` and force :math:`P/(Gb^2)` at penetrations ``u_bar``.
