@@ -162,6 +162,12 @@ def check_law(law, params: ModelParameters):
     ------
     ValueError
         If ``law`` lacks a member of :class:`ContactLaw` or was built for other parameters.
+
+    Examples
+    --------
+    >>> law = check_law(None, ModelParameters(0.01, 1000.0))
+    >>> isinstance(law, ContactLaw), law.u_end
+    (True, 0.0)
     """
     if law is None:
         return AsperityLaw(params)

@@ -46,7 +46,11 @@ class HeightDistribution(abc.ABC):
 
     def __repr__(self) -> str:
         """``Name()``, so signatures and help() show the distribution, not an object address
-        (a distribution with parameters shows them, as a dataclass does)."""
+        (a distribution with parameters shows them, as a dataclass does).
+
+        >>> GAUSSIAN
+        Gaussian()
+        """
         return f"{type(self).__name__}()"
 
     @abc.abstractmethod

@@ -7,24 +7,16 @@ most tensile value (the pull-off force, Table 1) and returns to zero as
 coming from full contact, where :math:`\bar P(\bar d)` equals the load: on the stable
 branch, :math:`d\bar P/d\bar d < 0`.
 
-The functions here work on a :class:`~asperity.tabulation.Tabulation` (the integrals and
-their separation derivatives at any separation in its range) and on grids of the force:
-
-=========================  ==========================================================
-:func:`start_separation`   Hertz estimate of a separation under which the force exceeds a load
-:func:`bracket_low`        a separation where the force exceeds every requested load
-:func:`force_grid`         the force and its derivative on a grid of separations
-:func:`stable_branch`      the grid of the stable branch, ending at pull-off
-:func:`branch_guess`       bracket and cubic-Hermite first guess of :math:`\bar P(\bar d) = P`
-:func:`invert_branch`      separations with :math:`\bar P(\bar d) = P` on a monotone branch
-:func:`find_pull_off`      the most tensile force on an interval (:class:`PullOff`)
-=========================  ==========================================================
-
-:func:`find_pull_off` and :class:`PullOff` live in :mod:`asperity.pull_off_search` and
-are re-exported here.
-:class:`~asperity.curves.Model` caches the tabulation and pull-off per parameter set and
-calls these; a loading/unloading cycle calls them on its other branches.  Forces are
-:math:`P/(NGb^2)` per asperity (positive compressive), separations :math:`d/\sigma`.
+The functions work on a :class:`~asperity.tabulation.Tabulation` (the integrals and their
+separation derivatives anywhere in its range): :func:`start_separation` and
+:func:`bracket_low` find a separation carrying more than every load, :func:`force_grid`
+tabulates the force, :func:`stable_branch` cuts the stable branch at pull-off
+(:func:`find_pull_off`, re-exported from :mod:`asperity.pull_off_search` with
+:class:`PullOff`), and :func:`invert_branch` (from :func:`branch_guess`) solves
+:math:`\bar P(\bar d) = P` on a monotone branch.  :class:`~asperity.curves.Model` caches
+the tabulation and pull-off and calls these; a loading/unloading cycle calls them on its
+other branches.  Forces are :math:`P/(NGb^2)` per asperity (positive compressive),
+separations :math:`d/\sigma`.
 
 References
 ----------
@@ -109,6 +101,8 @@ def start_separation(params: ModelParameters, P_max, d_hi) -> float:
     ----------
     Adams et al., Eq (6); Greenwood & Williamson (1966).
     """
+    if not isinstance(params, ModelParameters):
+        raise ValueError(f"params must be ModelParameters, got {type(params).__name__}")
     P_max = float(scalar(as_float_array(P_max, "P_max"), "P_max"))
     d_hi = float(scalar(as_float_array(d_hi, "d_hi"), "d_hi"))
     p = params
@@ -300,6 +294,12 @@ def branch_guess(P, grid, Pg, dPg):
     a, b, x : ndarray
         Bracket ends and the guess, one per load.
 
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite, or the grid is not increasing with ``Pg``, ``dPg``
+        of its length.
+
     Examples
     --------
     >>> a, b, x = branch_guess(np.array([1.5]), np.array([0.0, 1.0]), np.array([2.0, 1.0]),
@@ -311,6 +311,19 @@ def branch_guess(P, grid, Pg, dPg):
     ----------
     Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980) 238 (cubic Hermite interpolation).
     """
+    P = as_float_array(P, "P").ravel()
+    grid, Pg, dPg = _check_grid(grid, Pg, dPg)
+    return _branch_guess(P, grid, Pg, dPg)
+
+
+def _check_grid(grid, Pg, dPg):
+    grid, Pg, dPg = (as_float_array(x, n).ravel() for x, n in ((grid, "grid"), (Pg, "Pg"), (dPg, "dPg")))
+    if not (grid.size >= 2 and grid.size == Pg.size == dPg.size and np.all(np.diff(grid) > 0)):
+        raise ValueError("grid must be increasing, with Pg and dPg of its length (at least 2 points)")
+    return grid, Pg, dPg
+
+
+def _branch_guess(P, grid, Pg, dPg):
     n = grid.size
     below = Pg[None, :] <= P[:, None]
     j = np.clip(np.argmax(below, axis=1), 1, n - 1)
@@ -384,9 +397,7 @@ def invert_branch(tab: Tabulation, P, grid, Pg, dPg):
     Adams et al., Eqs (6), (18).
     """
     P = as_float_array(P, "P").ravel()
-    grid, Pg, dPg = (as_float_array(x, n).ravel() for x, n in ((grid, "grid"), (Pg, "Pg"), (dPg, "dPg")))
-    if not (grid.size >= 2 and grid.size == Pg.size == dPg.size and np.all(np.diff(grid) > 0)):
-        raise ValueError("grid must be increasing, with Pg and dPg of its length (at least 2 points)")
+    grid, Pg, dPg = _check_grid(grid, Pg, dPg)
     check_tabulation(tab, grid[0], grid[-1], names=("grid[0]", "grid[-1]"))
     sign = 1.0 if Pg[0] >= Pg[-1] else -1.0  # work on a falling branch: -P on a rising one
     lo, hi = min(Pg[0], Pg[-1]), max(Pg[0], Pg[-1])
@@ -397,7 +408,7 @@ def invert_branch(tab: Tabulation, P, grid, Pg, dPg):
 
 
 def _invert(tab, P, grid, Pg, dPg, sign=1.0):
-    a, b, x = branch_guess(sign * P, grid, sign * Pg, sign * dPg)
+    a, b, x = _branch_guess(sign * P, grid, sign * Pg, sign * dPg)
     d = np.empty_like(P)
     out = np.empty((P.size, 4))
     active = np.arange(P.size)

@@ -74,6 +74,14 @@ class Tabulation:
     ValueError
         If ``law`` is not a :class:`~asperity.asperity_law.ContactLaw` for ``params``, or
         ``heights`` is not a :class:`~asperity.heights.HeightDistribution`.
+
+    Examples
+    --------
+    >>> from asperity.asperity_law import ModelParameters
+    >>> tab = Tabulation(ModelParameters(0.01, 1000.0), -3.0, 10.0)
+    >>> S0, S1 = tab.sums([0.0], order=1)  # columns: contacts, P, F, area
+    >>> round(float(S0[0, 0]), 12), bool(S1[0, 1] < 0)  # half the asperities touch; P falls with d
+    (0.5, True)
     """
 
     def __init__(self, params: ModelParameters, d_min: float, d_max: float,
