@@ -88,6 +88,8 @@ def scalar(value, name: str) -> float:
 def _reject_non_real(value, name: str) -> None:
     """Refuse what NumPy would silently turn into floats: None, strings, complex numbers,
     dates, dicts and masked arrays (whose mask ``np.asarray`` drops)."""
+    if type(value) is float or (type(value) is np.ndarray and value.dtype.kind in "fiu"):
+        return  # the common case, decided at once
     import reprlib  # short reprs of huge inputs; local to keep this helper self-contained
 
     what = None
