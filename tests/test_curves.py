@@ -4,7 +4,7 @@ import io
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import asperity
@@ -151,6 +151,8 @@ def test_bad_d_max():
        st.floats(-2.0, 6.0))
 def test_load_curve_inverts_at_random_parameters(alpha, beta, gamma, log_load):
     P = 10.0**log_load * np.array([1.0, 3.0])
+    # Hertz needs d ~ -(P / (3.8 alpha beta^2))^(2/3): stay well inside d >= D_MIN = -1e4.
+    assume(P.max() <= 1e4 * alpha * beta**2)
     lc = asperity.load_curve(P, alpha, beta, gamma)
     sc = asperity.separation_curve(lc.d, alpha, beta, gamma)
     # With strong adhesion a small load is a difference of large compressive and tensile
@@ -208,3 +210,38 @@ def test_out_of_range_parameter_combinations(kwargs, needle):
 def test_vanishing_load_gives_infinite_mu_without_warnings():
     c = asperity.load_curve([5e-324, 1.0], 0.01, 1000, 1e-3)
     assert np.isinf(c.mu[0]) and np.isfinite(c.mu[1])
+
+
+def test_model_delegates_to_load_control(monkeypatch):
+    # Model is a cache: the algorithms are asperity.load_control's, called with its tabulation.
+    from asperity import curves, load_control
+
+    calls = []
+
+    def spy(name):
+        real = getattr(load_control, name)
+
+        def wrapper(*args, **kwargs):
+            calls.append(name)
+            return real(*args, **kwargs)
+        monkeypatch.setattr(curves, name, wrapper)
+
+    for name in ("start_separation", "bracket_low", "stable_branch", "invert_branch", "find_pull_off"):
+        spy(name)
+    m = asperity.Model(0.003, 1000, 1e-3)
+    lc = m.load_curve([1.0, 10.0])
+    assert calls == ["start_separation", "bracket_low", "stable_branch", "invert_branch"]
+    calls.clear()
+    po = m.pull_off()  # found on the load curve's grid, cached
+    assert calls == [] and po.exists
+    tab = m.tabulation(-3.0, m.d_search)
+    branch = load_control.stable_branch(tab, float(lc.d.min()) - 1.0, m.d_search)
+    np.testing.assert_allclose(branch.tab.sums(lc.d)[0][:, 1], [1.0, 10.0], rtol=1e-10)
+    assert m.pull_off(5.0).exists and calls == ["find_pull_off"]
+
+
+def test_pull_off_to_dict():
+    d = asperity.pull_off(0.01, 1000, 0.0).to_dict()
+    assert d == {"pull_off": 0.0, "d": None, "exists": False}
+    po = asperity.pull_off(0.003, 1000, 1e-3)
+    assert po.as_dict() == po.to_dict() and po.to_dict()["d"] == po.d

@@ -158,5 +158,80 @@ def test_lambda_range_and_far_jkr():
 
 @given(st.floats(1e-10, 1e10), st.floats(1e-6, 1e6))
 def test_radius_inverse(lam, A):
-    t = md._t_of_radius(np.array([A]), lam)
+    t = md.md_t_of_radius(np.array([A]), lam)
     assert md.md_radius(t, lam)[0] == pytest.approx(A, rel=1e-12)
+
+
+def curve_mp(t, lam):
+    """Eqs (11)-(13) in the paper's m form, A from the quadratic formula (to be run at 60 digits)."""
+    t, lam = mp.mpf(t), mp.mpf(lam)
+    m = mp.sqrt(1 + t * t)
+    c2 = lam / 2 * (t + (m * m - 2) * mp.atan(t))
+    c1 = 4 * lam**2 / 3 * (t * mp.atan(t) - m + 1)
+    A = (-c1 + mp.sqrt(c1 * c1 + 4 * c2)) / (2 * c2)
+    return A, A**3 - lam * A * A * (t + m * m * mp.atan(t)), A * A - 4 * lam * A * t / 3
+
+
+@pytest.mark.parametrize("lam", [1e-3, 0.5, 3.0, 100.0])
+@pytest.mark.parametrize("t", [1e-4, 0.01, 0.3, 0.49, 0.51, 2.0, 50.0, 1e4])
+def test_curve_and_its_derivatives_match_mpmath(t, lam):
+    A, P, D, dA, dP, dD = (float(x) for x in md.md_curve(t, lam, derivatives=True))
+    with mp.workdps(60):
+        ref = curve_mp(t, lam)
+        dref = [mp.diff(lambda x, k=k: curve_mp(x, lam)[k], t) for k in range(3)]
+        # dP and dD are differences of terms that nearly cancel for t >> 1: the size of the terms
+        g, dg = t + (1 + t * t) * mp.atan(t), 2 + 2 * t * mp.atan(t)
+        a, da = ref[0], dref[0]
+        size_P = float(3 * a * a * abs(da) + lam * (2 * a * abs(da) * g + a * a * dg))
+        size_D = float(2 * a * abs(da) + 4 * lam * (abs(da) * t + a) / 3)
+    for got, want in zip((A, P, D, dA), (*ref, dref[0]), strict=True):
+        assert got == pytest.approx(float(want), rel=1e-14)
+    assert abs(dP - float(dref[1])) <= 1e-14 * size_P
+    assert abs(dD - float(dref[2])) <= 1e-14 * size_D
+    # without derivatives: the same first three, bit for bit
+    assert tuple(md.md_curve(t, lam)) == (A, P, D)
+
+
+@pytest.mark.parametrize("lam", [1e-12, 1e-3, 1.0, 1e12])
+def test_t_of_radius_round_trip_and_limits(lam):
+    A = np.geomspace(1e-6, 1e6, 13)
+    np.testing.assert_allclose(md.md_radius(md.md_t_of_radius(A, lam), lam), A, rtol=1e-12)
+    t_max = md.md_t_of_radius(md.A_MAX, lam)  # the largest radius handled, and its t
+    assert float(md.md_radius(t_max, lam)) == pytest.approx(md.A_MAX, rel=1e-10)
+    with pytest.raises(ValueError, match=r"A \(contact radius\) must lie in"):
+        md.md_t_of_radius(md.A_MAX * (1 + 1e-12), lam)
+    with pytest.raises(ValueError, match="A"):
+        md.md_t_of_radius(1e-200, lam)  # below the radius at t = 1e100
+
+
+@pytest.mark.parametrize("lam", [1e-12, 1e-3, 1.0, 1e12])
+def test_curve_overflow_limit(lam):
+    # At the radius bound A_MAX everything is finite, with no warning (pytest turns warnings
+    # into errors); just beyond it the curve refuses t, naming it and its valid range.
+    t_min = float(md.md_t_of_radius(md.A_MAX, lam))
+    out = md.md_curve(t_min, lam, derivatives=True)
+    assert all(np.isfinite(x) for x in out) and float(out[0]) == pytest.approx(md.A_MAX, rel=1e-10)
+    for call in (md.md_curve, md.md_radius, md.md_load, md.md_penetration):
+        with pytest.raises(ValueError, match=r"t = sqrt\(m\^2 - 1\) must lie in \[") as err:
+            call(t_min * (1 - 1e-8), lam)
+        assert f"{t_min:.6g}" in str(err.value)
+
+
+BAD_VALUES = [None, True, np.bool_(False), 1 + 2j, np.array([1 + 0j]), {"t": 1.0}, "1.0", b"1",
+              np.ma.masked_array([1.0, 2.0], mask=[False, True]), [1.0, None], np.nan, np.inf, [[1.0], [1.0, 2.0]]]
+
+
+@pytest.mark.parametrize("bad", BAD_VALUES, ids=repr)
+def test_bad_types_name_the_parameter(bad):
+    for call, name in ((lambda: md.md_curve(bad, 1.0), "t"), (lambda: md.md_curve(1.0, bad), "lam"),
+                       (lambda: md.md_radius(bad, 1.0), "t"), (lambda: md.md_t_of_radius(bad, 1.0), "A"),
+                       (lambda: md.md_t_of_radius(1.0, bad), "lam"), (lambda: md.md_solve(bad, 1.0), "delta"),
+                       (lambda: md.md_solve(1.0, bad), "lam"), (lambda: md.md_branch_end(bad), "lam"),
+                       (lambda: md.md_pull_off(bad), "lam")):
+        with pytest.raises(ValueError, match=f"^{name}"):
+            call()
+
+
+def test_derivatives_flag_must_be_a_bool():
+    with pytest.raises(TypeError, match="derivatives"):
+        md.md_curve(1.0, 1.0, derivatives="yes")

@@ -17,7 +17,7 @@ u = pint.UnitRegistry()
 
 
 @pytest.mark.parametrize("value, message", [
-    (None, "x must be a real number, got None"), (True, "boolean"), (np.bool_(False), "boolean"),
+    (None, "x must be a real number.*got None"), (True, "boolean"), (np.bool_(False), "boolean"),
     (1j, "complex"), (np.array([1 + 0j]), "complex"), ("abc", "real number"), ({"a": 1}, "real number"),
     (float("nan"), "finite"), ([1.0, float("inf")], "finite"), ([], "must not be empty"),
     ([1.0, True], "boolean"), ([[1.0], [np.True_]], "boolean"), ([1.0, [2.0, 3.0]], "real number"),
@@ -75,6 +75,5 @@ def test_poisson_rejects(nu):
 
 def test_as_float_array_accepts_numbers():
     np.testing.assert_array_equal(as_float_array([1, 2.5], "x"), [1.0, 2.5])
-    np.testing.assert_array_equal(as_float_array(np.ma.masked_array([1.0, 2.0], [False, False]), "x"), [1.0, 2.0])
     assert as_float_array(np.float32(0.5), "x").dtype == np.float64
     assert as_float_array([], "x", allow_empty=True).size == 0

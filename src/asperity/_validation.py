@@ -18,6 +18,7 @@ from .units import to_si
 __all__ = [
     "as_float_array",
     "check_nonnegative",
+    "check_overflow",
     "check_poisson",
     "check_positive",
     "check_radius",
@@ -32,11 +33,10 @@ __all__ = [
 def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray:
     """Convert ``value`` to a float array; reject NaN, infinity and (by default) emptiness.
 
-    None, booleans (also inside lists), complex numbers, masked values, strings that are
-    not numbers and ragged lists raise :class:`ValueError` naming ``name``.
+    None, booleans (also inside lists), complex numbers, masked values, strings, dates,
+    dicts and ragged lists raise :class:`ValueError` naming ``name``.
     """
-    if value is None:
-        raise ValueError(f"{name} must be a real number, got None")
+    _reject_non_real(value, name)
     if isinstance(value, bool | np.bool_) or _holds_bool(value):
         raise ValueError(f"{name} must be a real number, got a boolean {value!r}")
     if np.ma.is_masked(value):
@@ -184,3 +184,55 @@ def check_scalar_poisson(value, name: str = "nu") -> float:
     if not -1.0 < x < 0.5:
         raise ValueError(f"{name} (Poisson's ratio) must lie in (-1, 0.5), got {value!r}")
     return x
+
+
+def _reject_non_real(value, name: str) -> None:
+    """Refuse what NumPy would silently turn into floats: None, strings, complex numbers,
+    dates, dicts and masked arrays (whose mask ``np.asarray`` drops)."""
+    if type(value) is float or (type(value) is np.ndarray and value.dtype.kind in "fiu"):
+        return  # the common case, decided at once
+    import reprlib  # short reprs of huge inputs; local to keep this helper self-contained
+
+    what = None
+    if isinstance(value, np.ma.MaskedArray):
+        what = "a masked array (fill or drop the masked values first)"
+    elif value is None or isinstance(value, str | bytes | dict):
+        what = "a dict" if isinstance(value, dict) else reprlib.repr(value)
+    else:
+        try:
+            raw = np.asarray(value)
+        except (TypeError, ValueError):  # ragged nesting, unconvertible objects
+            raw = None
+            what = f"{reprlib.repr(value)}, which does not convert to an array"
+        if raw is None:
+            pass
+        elif raw.dtype.kind == "c":
+            what = f"a complex value {reprlib.repr(value)}"
+        elif raw.dtype.kind in "USVMm":
+            what = f"an array of dtype {raw.dtype}" if raw.ndim else reprlib.repr(value)
+        elif raw.dtype == object:
+            bad = next((x for x in raw.flat if x is None or isinstance(x, str | bytes | dict | complex)), False)
+            if bad is not False:
+                what = f"an element {reprlib.repr(bad)}"
+    if what is not None:
+        raise ValueError(f"{name} must be a real number or an array of real numbers, got {what}")
+
+
+def check_overflow(result, name: str, limit, value):
+    """``result`` unchanged if every element is finite; else a ValueError for the input that overflowed.
+
+    ``value`` is the input called ``name``; ``limit`` its largest valid value, or a function
+    returning it (called only on overflow, with floating-point errors silenced), both broadcast
+    with ``result``.  The message names the first element that overflowed.  Compute ``result``
+    under ``np.errstate(over="ignore", invalid="ignore")`` so no warning precedes the error.
+    """
+    bad = ~np.isfinite(np.asarray(result))
+    if np.any(bad):
+        if callable(limit):
+            with np.errstate(all="ignore"):
+                limit = limit()
+        i = np.flatnonzero(bad.ravel())[0]
+        lim, got = (float(np.broadcast_to(x, bad.shape).ravel()[i]) for x in (limit, value))
+        raise ValueError(f"{name} must be <= {lim:.6g} here (beyond, the result overflows double precision), "
+                         f"got {got!r}")
+    return result

@@ -11,11 +11,16 @@ of height :math:`\bar z` at separation :math:`\bar d` the penetration is
   :math:`\bar u_{end} = \hat\delta\Delta_{end} < 0`.  Asperities below carry nothing.
 
 Forces are per asperity in units of :math:`G b^2`; radii in units of :math:`b`.
+
+:class:`ContactLaw` writes down what the integrals (:class:`~asperity.multi_asperity.Tabulation`)
+use from a per-asperity law; :class:`AsperityLaw` (Hertz / Maugis-Dugdale, with a friction
+law) is the default one, and an elastic-plastic law plugs in beside it.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 
@@ -23,9 +28,9 @@ from . import groups
 from ._validation import as_float_array, check_nonnegative, check_poisson, check_positive
 from .friction_stress import FrictionLaw, HurtadoKim
 from .hertz import hertz_force, hertz_radius
-from .maugis_dugdale import LAMBDA_RANGE, _curve, _t_of_radius, md_branch_end, md_solve
+from .maugis_dugdale import A_MAX, LAMBDA_RANGE, md_branch_end, md_curve, md_solve, md_t_of_radius
 
-__all__ = ["ModelParameters", "AsperityLaw"]
+__all__ = ["ModelParameters", "ContactLaw", "AsperityLaw", "check_law"]
 
 
 @dataclass(frozen=True)
@@ -98,8 +103,109 @@ def _check_scales(p: ModelParameters):
                             else "check gamma and h_over_b (h is an atomic distance)"))
 
 
+@runtime_checkable
+class ContactLaw(Protocol):
+    r"""What the multi-asperity integrals use from a per-asperity contact law.
+
+    :class:`~asperity.multi_asperity.Tabulation` evaluates a law once on quadrature nodes in
+    penetration and sums it against the height density, so a law is any object with these
+    members (:class:`AsperityLaw` is the default; an elastic-plastic law is another).  Units
+    are the model's: penetration :math:`\bar u = (z - d)/\sigma` of an asperity of height
+    :math:`z` at separation :math:`d`; contact radius :math:`\bar a = a/b`; forces per
+    asperity over :math:`Gb^2`, positive compressive.
+
+    Attributes
+    ----------
+    params : ModelParameters
+        The parameters the law was built for (:math:`\alpha, \beta, \gamma, \nu, h/b`,
+        friction law); the integrals report them and use :math:`\nu` for the pressure.
+    u_end : float
+        Lowest penetration at which an asperity carries force, :math:`\bar u_{end} \le 0`
+        (in :math:`\sigma`): 0 for Hertz, :math:`\hat\delta\Delta_{end} < 0` with adhesion
+        (the end of the stable Maugis-Dugdale branch, Eq 18's lower limit).  The integrals run
+        from there to infinity; the law may behave like a square or fourth root at it.
+    scale : float
+        Penetration (in :math:`\sigma`, > 0) over which the law changes near ``u_end``; the
+        first quadrature panel is no wider (1 for Hertz).
+    breakpoints : tuple of float
+        Penetrations above ``u_end`` where the law or its friction is not smooth, in
+        :math:`\sigma`: the Hurtado-Kim radii :math:`\bar a_1, \bar a_2` mapped to
+        penetrations, an elastic-plastic law's critical interference.  Quadrature panels
+        split there.
+
+    Methods
+    -------
+    evaluate(u_bar)
+        ``(a_bar, P)``: contact radius :math:`a/b` and force :math:`P/(Gb^2)` at the
+        penetrations ``u_bar`` (ndarray, any shape; 0 below ``u_end``).
+    friction(a_bar)
+        Friction force :math:`F/(Gb^2)` of one asperity of contact radius ``a_bar``
+        (Eq 10's integrand).
+    """
+
+    params: ModelParameters
+    u_end: float
+    scale: float
+    breakpoints: tuple[float, ...]
+
+    def evaluate(self, u_bar):
+        """Contact radius a/b and force P/(G b^2) at penetrations u_bar (model units)."""
+
+    def friction(self, a_bar):
+        """Friction force F/(G b^2) of one asperity with contact radius a/b."""
+
+
+def check_law(law, params: ModelParameters):
+    """``law`` if it is a :class:`ContactLaw` built for ``params``; ``AsperityLaw(params)`` if None.
+
+    Raises
+    ------
+    ValueError
+        If ``law`` lacks a member of :class:`ContactLaw` or was built for other parameters.
+
+    Examples
+    --------
+    >>> law = check_law(None, ModelParameters(0.01, 1000.0))
+    >>> isinstance(law, ContactLaw), law.u_end
+    (True, 0.0)
+    """
+    if law is None:
+        return AsperityLaw(params)
+    if not isinstance(law, ContactLaw):
+        raise ValueError("law must be a ContactLaw: it provides params, u_end, scale, breakpoints, "
+                         f"evaluate(u_bar) and friction(a_bar) (e.g. AsperityLaw(params)), got {type(law).__name__}")
+    if law.params != params:
+        raise ValueError(f"law was built for {law.params}, not for the model's {params}")
+    return law
+
+
 class AsperityLaw:
-    """Contact radius and force of one asperity versus its penetration (model units)."""
+    r"""Contact radius and force of one asperity versus its penetration (model units).
+
+    The default :class:`ContactLaw`: Hertz without adhesion (:math:`\gamma = 0`), the stable
+    Maugis-Dugdale branch with it, and the friction law of ``params``.
+
+    Parameters
+    ----------
+    params : ModelParameters
+        The model's parameters.
+
+    Attributes
+    ----------
+    params, u_end, scale, breakpoints :
+        As in :class:`ContactLaw`.
+    lam : float
+        Maugis parameter :math:`\lambda` (Eq 15; 0 without adhesion).
+    end : BranchPoint
+        End of the stable Maugis-Dugdale branch in Maugis' units (only with adhesion).
+
+    Raises
+    ------
+    ValueError
+        If the parameters overflow double precision or give :math:`\lambda` outside
+        :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or an adhesive reach beyond
+        :data:`U_END_LIMIT`.
+    """
 
     def __init__(self, params: ModelParameters):
         self.params = p = params
@@ -132,11 +238,12 @@ class AsperityLaw:
         if not p.adhesive:
             return tuple(sorted((radii / p.beta) ** 2))
         targets = radii * self.A_hat
-        targets = targets[targets > self.end.A]  # radii below the branch end never occur
+        # Radii below the branch end never occur; those beyond A_MAX lie past any penetration tabulated.
+        targets = targets[(targets > self.end.A) & (targets <= A_MAX)]
         if targets.size == 0:
             return ()
-        t = _t_of_radius(targets, self.lam)
-        return tuple(sorted(self.delta_hat * _curve(t, self.lam)[2]))
+        t = md_t_of_radius(targets, self.lam)
+        return tuple(sorted(self.delta_hat * md_curve(t, self.lam)[2]))
 
     def evaluate(self, u_bar):
         """Contact radius :math:`\\bar a` and force :math:`P/(Gb^2)` at penetrations ``u_bar``.

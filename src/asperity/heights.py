@@ -44,6 +44,15 @@ class HeightDistribution(abc.ABC):
     #: Heights above this carry a negligible share of any integral (pdf < ~1e-22).
     z_top: float = 10.0
 
+    def __repr__(self) -> str:
+        """``Name()``, so signatures and help() show the distribution, not an object address
+        (a distribution with parameters shows them, as a dataclass does).
+
+        >>> GAUSSIAN
+        Gaussian()
+        """
+        return f"{type(self).__name__}()"
+
     @abc.abstractmethod
     def pdf(self, z):
         """Probability density phi(z)."""

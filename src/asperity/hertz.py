@@ -21,9 +21,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_poisson, check_positive
+from ._validation import as_float_array, check_overflow, check_poisson, check_positive, check_radius
 
 __all__ = ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md"]
+
+_FLOAT_MAX = float(np.finfo(float).max)
 
 
 def _penetration(u_bar):
@@ -34,49 +36,168 @@ def _penetration(u_bar):
 def hertz_radius(u_bar, beta):
     r"""Hertz contact radius :math:`\bar a = a/b = \beta\,\bar u^{1/2}` (Eq 8).
 
+    .. math::
+        \bar a = \beta\,\bar u^{1/2}\quad(\bar u > 0),\qquad \bar a = 0\quad(\bar u \le 0)
+
     Parameters
     ----------
     u_bar : array_like
-        Penetration :math:`(z-d)/\sigma`; negative values (no contact) give 0.
+        Penetration :math:`\bar u = (z-d)/\sigma`, finite; negative values (no contact) give 0.
+        At most :math:`(\mathrm{DBL\_MAX}/\beta)^2` (DBL_MAX = 1.8e308), beyond which the
+        radius overflows.
     beta : array_like
         Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
+
+    Returns
+    -------
+    ndarray
+        :math:`a/b`, the broadcast shape of ``u_bar`` and ``beta``.
+
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite, ``beta <= 0``, or the radius would overflow.
+
+    Examples
+    --------
+    >>> float(hertz_radius(4.0, 10.0))
+    20.0
 
     References
     ----------
     Adams et al., Eq (8).
     """
-    return check_positive(beta, "beta") * np.sqrt(_penetration(u_bar))
+    beta = check_positive(beta, "beta")
+    u = _penetration(u_bar)
+    with np.errstate(over="ignore"):
+        a = beta * np.sqrt(u)
+    return check_overflow(a, "u_bar", lambda: (_FLOAT_MAX / beta) ** 2, u)
 
 
 def hertz_force(u_bar, alpha, beta, nu=0.3):
     r"""Hertz force of one asperity, :math:`P/(Gb^2) = \tfrac43\tfrac{2}{1-\nu}\alpha\beta^2\bar u^{3/2}`.
 
-    This is the integrand of Eq (6).
+    .. math::
+        \frac{P}{Gb^2} = \frac43\,\frac{2}{1-\nu}\,\alpha\beta^2\,\bar u^{3/2}
+
+    from :math:`P = \tfrac43E^*R^{1/2}u^{3/2}` and :math:`E^*/G = 2/(1-\nu)`: the integrand
+    of Eq (6).
 
     Parameters
     ----------
     u_bar : array_like
-        Penetration :math:`(z-d)/\sigma`; negative values give 0.
-    alpha, beta : array_like
-        Roughness and friction-regime parameters (Eq 7), > 0.
+        Penetration :math:`\bar u = (z-d)/\sigma`, finite; negative values give 0.  At most
+        :math:`(\mathrm{DBL\_MAX}/\max(c, 1))^{2/3}` with :math:`c = \tfrac83\alpha\beta^2/(1-\nu)`
+        and DBL_MAX = 1.8e308, beyond which the force overflows.
+    alpha : array_like
+        Roughness parameter :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
+    beta : array_like
+        Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7), with
+        :math:`\beta^2` and :math:`c` finite.
     nu : array_like
-        Poisson's ratio, -1 < nu < 0.5.
+        Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3).
+
+    Returns
+    -------
+    ndarray
+        :math:`P/(Gb^2)`, the broadcast shape of the inputs.
+
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite or out of its range, or the force would overflow.
+
+    Examples
+    --------
+    >>> round(float(hertz_force(1.0, 0.01, 1000.0, nu=0.3)), 6)  # (8/3)/0.7 * 0.01 * 1e6
+    38095.238095
 
     References
     ----------
-    Adams et al., Eq (6).
+    Adams et al., Eq (6); Johnson (1985), Eq (4.23).
     """
     alpha = check_positive(alpha, "alpha")
     beta = check_positive(beta, "beta")
     nu = check_poisson(nu)
-    return (8.0 / 3.0) / (1.0 - nu) * alpha * beta**2 * _penetration(u_bar) ** 1.5
+    u = _penetration(u_bar)
+    with np.errstate(over="ignore", invalid="ignore"):
+        scale = (8.0 / 3.0) / (1.0 - nu) * alpha * beta**2
+        P = scale * u**1.5
+    # beta**2 and the scale must stay finite; then u**1.5 and the product.
+    check_overflow(scale, "beta", lambda: np.sqrt(_FLOAT_MAX / np.maximum((8.0 / 3.0) / (1.0 - nu) * alpha, 1.0)),
+                   beta)
+    return check_overflow(P, "u_bar", lambda: (_FLOAT_MAX / np.maximum(scale, 1.0)) ** (2.0 / 3.0), u)
 
 
 def hertz_load_md(A):
-    """Hertz load in Maugis units, :math:`P/(\\pi w R) = A^3`."""
-    return as_float_array(A, "A", allow_empty=True) ** 3
+    r"""Hertz load in Maugis' units, :math:`P/(\pi wR) = A^3` (the :math:`w \to 0` limit).
+
+    .. math::
+        \frac{P}{\pi wR} = A^3,\qquad A = a\Big(\frac{K}{\pi wR^2}\Big)^{1/3}
+
+    Parameters
+    ----------
+    A : array_like
+        Contact radius in Maugis' units, :math:`0 \le A \le \mathrm{DBL\_MAX}^{1/3}`
+        (about 5.6e102; beyond, the load overflows).  May be empty.
+
+    Returns
+    -------
+    ndarray
+        :math:`P/(\pi wR)`, the shape of ``A``.
+
+    Raises
+    ------
+    ValueError
+        If ``A`` is not real and finite, negative, or its load would overflow.
+
+    Examples
+    --------
+    >>> float(hertz_load_md(2.0))
+    8.0
+
+    References
+    ----------
+    Maugis (1992); Johnson (1985), ch. 4.
+    """
+    A = check_radius(A)
+    with np.errstate(over="ignore"):
+        P = A**3
+    return check_overflow(P, "A", np.cbrt(_FLOAT_MAX), A)
 
 
 def hertz_penetration_md(A):
-    """Hertz penetration in Maugis units, :math:`\\Delta = A^2`."""
-    return as_float_array(A, "A", allow_empty=True) ** 2
+    r"""Hertz penetration in Maugis' units, :math:`\Delta = A^2`.
+
+    .. math::
+        \Delta = A^2,\qquad \Delta = u\Big(\frac{K^2}{\pi^2w^2R}\Big)^{1/3}
+
+    Parameters
+    ----------
+    A : array_like
+        Contact radius in Maugis' units, :math:`0 \le A \le \mathrm{DBL\_MAX}^{1/2}`
+        (about 1.3e154; beyond, the penetration overflows).  May be empty.
+
+    Returns
+    -------
+    ndarray
+        :math:`\Delta`, the shape of ``A``.
+
+    Raises
+    ------
+    ValueError
+        If ``A`` is not real and finite, negative, or its penetration would overflow.
+
+    Examples
+    --------
+    >>> float(hertz_penetration_md(3.0))
+    9.0
+
+    References
+    ----------
+    Maugis (1992); Johnson (1985), ch. 4.
+    """
+    A = check_radius(A)
+    with np.errstate(over="ignore"):
+        D = A**2
+    return check_overflow(D, "A", np.sqrt(_FLOAT_MAX), A)

@@ -19,9 +19,13 @@ runs from :math:`A = \infty` (:math:`t \to 0`) to :math:`A \to 0` (:math:`t \to 
 Stability under displacement control requires :math:`d\Delta/dA > 0`.  Above
 :math:`\lambda_c \approx 0.938` the curve :math:`\Delta(A)` has an interior minimum,
 which ends the stable branch; below it the branch runs to :math:`A \to 0` with a
-finite tensile load.
+finite tensile load.  The branch end, :math:`\lambda_c`, the stable-branch solution
+:func:`md_solve` and the pull-off loads live in :mod:`asperity.maugis_dugdale_branch` and
+are re-exported here.
 
-All functions broadcast over ``t`` and ``lam`` like ufuncs, except where noted.
+All functions broadcast over ``t`` and ``lam`` like ufuncs, except where noted.  Inputs
+that would overflow double precision are refused: contact radii up to :data:`A_MAX`
+(``t`` from about :math:`10^{-50}` up) and penetrations up to :data:`DELTA_MAX`.
 
 References
 ----------
@@ -34,28 +38,24 @@ References
 
 from __future__ import annotations
 
-import functools
-from dataclasses import dataclass
-
 import numpy as np
-from scipy import optimize
 
-from ._validation import as_float_array, check_positive, scalar
+from ._validation import as_float_array, check_positive
+from .maugis_dugdale_branch import (
+    A_MAX,
+    DELTA_MAX,
+    LAMBDA_C,
+    LAMBDA_RANGE,
+    BranchPoint,
+    check_lambda,
+    md_branch_end,
+    md_pull_off,
+    md_solve,
+)
 
-__all__ = [
-    "LAMBDA_C",
-    "BranchPoint",
-    "md_radius",
-    "md_load",
-    "md_penetration",
-    "md_curve",
-    "md_branch_end",
-    "md_solve",
-    "md_pull_off",
-    "md_lambda",
-    "LAMBDA_RANGE",
-    "check_lambda",
-]
+__all__ = ["LAMBDA_C", "BranchPoint", "md_radius", "md_load", "md_penetration", "md_curve", "md_t_of_radius",
+           "md_branch_end", "md_solve", "md_pull_off", "md_lambda", "LAMBDA_RANGE", "T_RANGE", "A_MAX",
+           "DELTA_MAX", "check_lambda"]
 
 # Coefficients of the series t + (t^2 - 1) atan t = sum_k (-1)^(k+1) 4k t^(2k+1)/((2k-1)(2k+1)).
 _SERIES_T = 0.5
@@ -102,28 +102,34 @@ def _radius_from_brackets(lam, f1, f2):
     return 2.0 / (a1 + np.sqrt(a1 * a1 + 4.0 * a2)), a1, a2
 
 
-#: Range of the Maugis parameter handled (DMT and JKR are within 1e-6 of their limits far inside).
-LAMBDA_RANGE = (1e-12, 1e12)
-#: Range of t = sqrt(m^2 - 1) handled without overflow.
+#: Range of t = sqrt(m^2 - 1) handled: t^2 and the brackets stay finite up to 1e100; at the
+#: low end the radius bound :data:`A_MAX` binds first (from t ~ 1e-50).
 T_RANGE = (1e-100, 1e100)
 
 
-def check_lambda(lam):
-    """The Maugis parameter as a float array within :data:`LAMBDA_RANGE`."""
-    lam = check_positive(lam, "lam")
-    lo, hi = LAMBDA_RANGE
-    if np.any((lam < lo) | (lam > hi)):
-        raise ValueError(f"lam (Maugis parameter) must lie in [{lo:g}, {hi:g}] (use asperity.dmt below and "
-                         f"asperity.jkr above), got {lam!r}")
-    return lam
-
-
 def _check_t_lam(t, lam):
+    """t and lam validated (types and ranges; _check_radius checks the radius bound)."""
     t = as_float_array(t, "t", allow_empty=True)
+    lam = check_lambda(lam)
     lo, hi = T_RANGE
     if np.any((t < lo) | (t > hi)):
-        raise ValueError(f"t = sqrt(m^2 - 1) must lie in [{lo:g}, {hi:g}]")
-    return t, check_lambda(lam)
+        raise ValueError(f"t = sqrt(m^2 - 1) must lie in [{lo:g}, {hi:g}], got {t!r}")
+    return t, lam
+
+
+def _check_radius(A, t, lam):
+    """Refuse t whose radius exceeds A_MAX (the curve would overflow), naming the smallest valid t.
+
+    The bound has a 1e-9 tolerance, so md_t_of_radius(A_MAX) (good to ~1e-11 there) passes.
+    """
+    over = np.ravel(A > A_MAX * (1.0 + 1e-9))
+    if np.any(over):
+        i = np.flatnonzero(over)[0]
+        t_i, lam_i = (float(np.broadcast_to(x, np.shape(A)).ravel()[i]) for x in (t, lam))
+        t_min = float(_t_of_radius(np.array(A_MAX), lam_i))
+        raise ValueError(f"t = sqrt(m^2 - 1) must lie in [{t_min:.6g}, {T_RANGE[1]:g}] for lam = {lam_i:g}, got t = "
+                         f"{t_i:g}: smaller t give a contact radius A > A_MAX = {A_MAX:g}, where the curve "
+                         "overflows double precision")
 
 
 def md_radius(t, lam):
@@ -138,14 +144,26 @@ def md_radius(t, lam):
     Parameters
     ----------
     t : array_like
-        :math:`\sqrt{m^2-1} > 0`, with :math:`m = c/a`.
+        :math:`t = \sqrt{m^2-1}`, :math:`m = c/a > 1` (cohesive-zone over contact radius):
+        :math:`t \le 10^{100}`, and :math:`A \le` :data:`A_MAX` (about :math:`t \ge 10^{-50}`).
     lam : array_like
-        Maugis parameter :math:`\lambda > 0`.
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]`` (:data:`LAMBDA_RANGE`).
 
     Returns
     -------
     ndarray
-        :math:`A = a (K/\pi w R^2)^{1/3}`.
+        :math:`A = a (K/\pi w R^2)^{1/3}`, the broadcast shape of ``t`` and ``lam``.
+
+    Raises
+    ------
+    ValueError
+        If ``t`` or ``lam`` is not real and finite or lies outside its range.
+
+    Examples
+    --------
+    >>> A = float(md_radius(1e-6, 1e-8))  # m -> 1: Hertz-like, (2/3) lam A^2 t^3 ~ 1
+    >>> round((2 / 3) * 1e-8 * A**2 * 1e-18, 6)
+    1.0
 
     References
     ----------
@@ -153,13 +171,41 @@ def md_radius(t, lam):
     """
     t, lam = _check_t_lam(t, lam)
     f1, f2, *_ = _brackets(t)
-    return _radius_from_brackets(lam, f1, f2)[0]
+    A = _radius_from_brackets(lam, f1, f2)[0]
+    _check_radius(A, t, lam)
+    return A
 
 
 def md_load(t, lam):
-    r"""Load :math:`P = P/(\pi w R)` from Eq (12): :math:`A^3 - \lambda A^2[t + m^2\tan^{-1}t]`.
+    r"""Load :math:`P/(\pi wR)` of the Maugis-Dugdale curve at :math:`t` (Eq 12).
 
-    Parameters and units as in :func:`md_radius`.
+    .. math::
+        P = A^3 - \lambda A^2\big[t + m^2\tan^{-1}t\big],\qquad m^2 = 1 + t^2,
+
+    with :math:`A` = :func:`md_radius` (Eq 11) at the same :math:`t`.
+
+    Parameters
+    ----------
+    t : array_like
+        :math:`t = \sqrt{m^2-1}`, range as in :func:`md_radius` (:math:`A \le` :data:`A_MAX`).
+    lam : array_like
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``.
+
+    Returns
+    -------
+    ndarray
+        Load :math:`P/(\pi wR)` (negative: tensile), the broadcast shape of the inputs.
+
+    Raises
+    ------
+    ValueError
+        If ``t`` or ``lam`` is not real and finite or lies outside its range.
+
+    Examples
+    --------
+    >>> A = float(md_radius(0.01, 1e-8))
+    >>> round(float(md_load(0.01, 1e-8)) - (A**3 - 2.0), 3)  # DMT: P = A^3 - 2
+    0.0
 
     References
     ----------
@@ -169,9 +215,35 @@ def md_load(t, lam):
 
 
 def md_penetration(t, lam):
-    r"""Penetration :math:`\Delta` from Eq (13): :math:`A^2 - \tfrac43\lambda A t`.
+    r"""Penetration :math:`\Delta = u(K^2/\pi^2w^2R)^{1/3}` of the Maugis-Dugdale curve (Eq 13).
 
-    Parameters and units as in :func:`md_radius`.
+    .. math::
+        \Delta = A^2 - \tfrac43\lambda A t,
+
+    with :math:`A` = :func:`md_radius` (Eq 11) at the same :math:`t`.
+
+    Parameters
+    ----------
+    t : array_like
+        :math:`t = \sqrt{m^2-1}`, range as in :func:`md_radius` (:math:`A \le` :data:`A_MAX`).
+    lam : array_like
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``.
+
+    Returns
+    -------
+    ndarray
+        Penetration :math:`\Delta` (negative: the sphere's top is above the flat).
+
+    Raises
+    ------
+    ValueError
+        If ``t`` or ``lam`` is not real and finite or lies outside its range.
+
+    Examples
+    --------
+    >>> A = float(md_radius(0.01, 1e-8))
+    >>> round(float(md_penetration(0.01, 1e-8)) / A**2, 6)  # DMT: Hertz penetration A^2
+    1.0
 
     References
     ----------
@@ -180,15 +252,55 @@ def md_penetration(t, lam):
     return md_curve(t, lam)[2]
 
 
-def md_curve(t, lam):
-    """Radius, load and penetration ``(A, P, Delta)`` at ``t`` (Eqs 11-13 at once)."""
+def md_curve(t, lam, derivatives=False):
+    r"""Radius, load and penetration of the Maugis-Dugdale curve at :math:`t` (Eqs 11-13).
+
+    .. math::
+        a_2A^2 + a_1A = 1,\quad a_2 = \tfrac{\lambda}{2}\big[t + (t^2-1)\tan^{-1}t\big],\quad
+        a_1 = \tfrac{4\lambda^2}{3}\big[t\tan^{-1}t - m + 1\big],
+
+        P = A^3 - \lambda A^2\big[t + m^2\tan^{-1}t\big],\qquad \Delta = A^2 - \tfrac43\lambda At,
+
+    with :math:`m = \sqrt{1+t^2}`; the t-derivatives differentiate these (implicitly for
+    :math:`A`: :math:`A' = -(a_2'A^2 + a_1'A)/(2a_2A + a_1)`).
+
+    Parameters
+    ----------
+    t : array_like
+        :math:`t = \sqrt{m^2-1}`, range as in :func:`md_radius` (:math:`A \le` :data:`A_MAX`).
+    lam : array_like
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``.
+    derivatives : bool
+        Also return the derivatives with respect to :math:`t` (default False).
+
+    Returns
+    -------
+    tuple of ndarray
+        ``(A, P, Delta)``: radius :math:`a(K/\pi wR^2)^{1/3}`, load :math:`P/(\pi wR)`,
+        penetration :math:`\Delta`; with ``derivatives`` then ``(dA_dt, dP_dt, dDelta_dt)``.
+        Each has the broadcast shape of the inputs.
+
+    Raises
+    ------
+    ValueError
+        If ``t`` or ``lam`` is not real and finite or lies outside its range.
+
+    Examples
+    --------
+    >>> A, P, D, dA, dP, dD = md_curve(1.0, 2.0, derivatives=True)
+    >>> bool(dA < 0)  # the radius falls as t grows
+    True
+
+    References
+    ----------
+    Maugis (1992); Adams et al., Eqs (11)-(13).
+    """
+    if not isinstance(derivatives, bool | np.bool_):
+        raise TypeError(f"derivatives must be True or False, got {derivatives!r}")
     t, lam = _check_t_lam(t, lam)
-    return _curve(t, lam)[:3]
-
-
-def _curve(t, lam, derivatives=False):
     f1, f2, g, df1, df2, dg = _brackets(t)
     A, a1, a2 = _radius_from_brackets(lam, f1, f2)
+    _check_radius(A, t, lam)
     P = A**3 - lam * A * A * g
     D = A * A - (4.0 / 3.0) * lam * A * t
     if not derivatives:
@@ -201,180 +313,52 @@ def _curve(t, lam, derivatives=False):
     return A, P, D, dA, dP, dD
 
 
-def _x0(lam):
-    """Limit of A t as A -> 0: root of (pi lam/4) x^2 + (4 lam^2/3)(pi/2 - 1) x - 1 = 0."""
-    q2 = 0.25 * np.pi * lam
-    q1 = (4.0 / 3.0) * lam * lam * (0.5 * np.pi - 1.0)
-    return 2.0 / (q1 + np.sqrt(q1 * q1 + 4.0 * q2))
+def md_t_of_radius(A, lam):
+    r"""The :math:`t = \sqrt{m^2-1}` at which Eq (11) gives the radius ``A``: the inverse of :func:`md_radius`.
 
-
-def _small_a_curvature(lam):
-    """c in Delta - Delta(A=0) = c A^2 + O(A^3) near A = 0; the branch reaches A = 0 iff c > 0."""
-    x0 = _x0(lam)
-    dF = 0.5 * np.pi * lam * x0 + (4.0 / 3.0) * lam * lam * (0.5 * np.pi - 1.0)
-    c2 = (0.25 * np.pi * lam + 2.0 * lam * lam / (3.0 * x0)) / dF
-    return 1.0 - (4.0 / 3.0) * lam * c2
-
-
-#: Critical Maugis parameter: below it the stable branch runs to A -> 0.
-LAMBDA_C = float(optimize.brentq(_small_a_curvature, 0.5, 1.5, xtol=1e-15, rtol=1e-15))
-
-
-@dataclass(frozen=True)
-class BranchPoint:
-    """A point of the Maugis-Dugdale curve: parameter t, radius A, load P, penetration delta."""
-
-    t: float
-    A: float
-    P: float
-    delta: float
-
-
-def _first_sign_change(func, lam, hi=16.0, n=400):
-    """log10 t of the first change of func(t) from < 0 to >= 0, or None."""
-    lo = min(-12.0, np.log10(1e-3 / lam))  # JKR-like curves turn at t ~ 1/lam
-    s = np.linspace(lo, hi, n)
-    vals = func(10.0**s)
-    idx = np.flatnonzero(vals >= 0)
-    if idx.size == 0 or idx[0] == 0:
-        return None
-    i = idx[0]
-    root = optimize.brentq(lambda x: float(func(10.0**x)), s[i - 1], s[i], xtol=1e-14,
-                           rtol=1e-15)
-    return root
-
-
-@functools.lru_cache(maxsize=4096)
-def _branch_end(lam: float) -> BranchPoint:
-    if lam < LAMBDA_C:
-        x0 = float(_x0(lam))
-        return BranchPoint(t=np.inf, A=0.0, P=-0.5 * np.pi * lam * x0 * x0,
-                           delta=-(4.0 / 3.0) * lam * x0)
-    s = _first_sign_change(lambda t: _curve(t, lam, True)[5], lam)
-    if s is None:  # lam within rounding of LAMBDA_C: the minimum sits at A -> 0
-        return _branch_end(np.nextafter(LAMBDA_C, 0.0))
-    t = 10.0**s
-    A, P, D = _curve(np.float64(t), lam)
-    return BranchPoint(t=t, A=float(A), P=float(P), delta=float(D))
-
-
-def md_branch_end(lam) -> BranchPoint:
-    r"""End of the stable, displacement-controlled branch of one asperity.
-
-    Above :math:`\lambda_c` (:data:`LAMBDA_C`) it is the minimum of :math:`\Delta(A)`
-    (:math:`d\Delta/dA = 0`); below, the limit :math:`A \to 0`, where
-    :math:`At \to x_0` with :math:`\tfrac{\pi\lambda}{4}x_0^2 + \tfrac{4\lambda^2}{3}
-    (\tfrac{\pi}{2}-1)x_0 = 1`, so :math:`\Delta = -\tfrac43\lambda x_0` and
-    :math:`P = -\tfrac{\pi}{2}\lambda x_0^2`.  The load there is the pull-off force under
-    displacement control.
+    At fixed :math:`A` the left side of Eq (11) increases from 0 to :math:`\infty` with
+    :math:`t`, so the root is unique; safeguarded Newton in :math:`\log t` finds it from the
+    small- and large-:math:`t` asymptotes.
 
     Parameters
     ----------
-    lam : float
-        Maugis parameter :math:`\lambda > 0` (scalar).
+    A : array_like
+        Contact radius :math:`a(K/\pi wR^2)^{1/3}`, from the radius at :math:`t = 10^{100}`
+        (about :math:`10^{-100}`) to :data:`A_MAX`.
+    lam : array_like
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``.
 
     Returns
     -------
-    BranchPoint
-        ``t`` (``inf`` below :math:`\lambda_c`), ``A``, ``P`` and ``delta`` there.
+    ndarray
+        :math:`t` with ``md_radius(t, lam) == A`` to about 1e-13, the broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        If ``A`` or ``lam`` is not real and finite or lies outside its range.
+
+    Examples
+    --------
+    >>> round(float(md_radius(md_t_of_radius(2.0, 0.5), 0.5)), 12)
+    2.0
 
     References
     ----------
-    Maugis (1992); Johnson & Greenwood (1997).
+    Maugis (1992); Adams et al., Eq (11).
     """
-    lam = float(check_lambda(scalar(lam, "lam")))
-    return _branch_end(lam)
-
-
-def md_solve(delta, lam):
-    r"""Stable-branch contact radius and load of one asperity at penetration :math:`\Delta`.
-
-    Inverts Eq (13) for :math:`t` on the stable branch (where :math:`\Delta(t)` is strictly
-    decreasing) by safeguarded Newton iteration in :math:`\log t`, then evaluates
-    Eqs (11)-(12).  Vectorized over ``delta``.
-
-    Parameters
-    ----------
-    delta : array_like
-        Penetration :math:`\Delta \ge \Delta_{end}` (see :func:`md_branch_end`).
-    lam : float
-        Maugis parameter :math:`\lambda > 0` (scalar).
-
-    Returns
-    -------
-    A, P, t : ndarray
-        Contact radius, load and parameter :math:`t` at each ``delta``.
-
-    References
-    ----------
-    Maugis (1992); Adams et al., Eqs (11)-(13).
-    """
-    lam = float(check_lambda(scalar(lam, "lam")))
-    delta = as_float_array(delta, "delta", allow_empty=True)
-    end = _branch_end(lam)
-    if np.any(delta < end.delta):
-        raise ValueError(f"delta must be >= the end of the stable branch, {end.delta:.17g}, "
-                         f"for lam={lam:g}")
-    t = _invert_penetration(delta, lam, end)
-    # At the end of a branch that runs to A -> 0 (t = inf) take the limit values.
-    finite = np.isfinite(t)
-    A, P, _ = _curve(np.where(finite, t, 1.0), lam)
-    A = np.where(finite, A, end.A)
-    P = np.where(finite, P, end.P)
-    return A, P, t
-
-
-def _invert_penetration(delta, lam, end):
-    """t on the stable branch with Delta(t) = delta (delta >= end.delta), vectorized."""
-    flat = delta.ravel()
-    if flat.size == 0:
-        return delta.copy()
-    out = np.empty_like(flat)
-    at_end = flat <= end.delta
-    out[at_end] = end.t
-    todo = ~at_end
-    if not np.any(todo):
-        return out.reshape(delta.shape)
-    target = flat[todo]
-    # Bracket in s = log10 t: Delta(s) is decreasing on the stable branch.
-    s_hi = np.log10(end.t) if np.isfinite(end.t) else 2.0
-    while np.isinf(end.t) and _curve(10.0**s_hi, lam)[2] > target.min() and s_hi < 300:
-        s_hi += 2.0
-    s_lo = min(s_hi - 1.0, 0.0)
-    while _curve(10.0**s_lo, lam)[2] < target.max():
-        s_lo -= 2.0
-    grid = np.linspace(s_lo, s_hi, 257)
-    dgrid = _curve(10.0**grid, lam)[2]
-    # Table look-up for a bracket and a starting point (dgrid is decreasing).
-    j = np.clip(np.searchsorted(-dgrid, -target), 1, grid.size - 1)
-    a, b = grid[j - 1], grid[j]
-    s = a + (b - a) * (dgrid[j - 1] - target) / (dgrid[j - 1] - dgrid[j])
-    active = np.arange(target.size)
-    for _ in range(100):
-        if active.size == 0:
-            break
-        sa = s[active]
-        t = 10.0**sa
-        _, _, D, _, _, dD = _curve(t, lam, True)
-        resid = D - target[active]
-        # Keep the bracket: Delta decreases with s.
-        a[active] = np.where(resid > 0, sa, a[active])
-        b[active] = np.where(resid < 0, sa, b[active])
-        slope = dD * t * np.log(10.0)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(slope < 0, -resid / slope, np.nan)
-        s_new = sa + step
-        bad = ~np.isfinite(s_new) | (s_new < a[active]) | (s_new > b[active])
-        s_new = np.where(bad, 0.5 * (a[active] + b[active]), s_new)
-        tol = 1e-14 * np.maximum(1.0, np.abs(sa))
-        # Stop at a tiny step, a collapsed bracket, or a residual at rounding level (near
-        # the branch end Delta(t) is flat and the step cannot shrink below rounding).
-        done = ((np.abs(resid) <= 1e-15 * np.maximum(np.abs(D), np.abs(target[active])))
-                | (~bad & (np.abs(step) <= tol)) | (b[active] - a[active] <= tol))
-        s[active] = np.where(done & bad, sa, s_new)
-        active = active[~done]
-    out[todo] = 10.0**s
-    return out.reshape(delta.shape)
+    A = as_float_array(A, "A", allow_empty=True)
+    lam = check_lambda(lam)
+    A, lam = np.broadcast_arrays(A, lam)
+    f1, f2, *_ = _brackets(np.full(A.shape, T_RANGE[1]))
+    A_min = _radius_from_brackets(lam, f1, f2)[0]
+    bad = (A < A_min) | (A > A_MAX)
+    if np.any(bad):
+        i = np.flatnonzero(bad.ravel())[0]
+        raise ValueError(f"A (contact radius) must lie in [{A_min.ravel()[i]:.6g}, {A_MAX:g}] for "
+                         f"lam = {lam.ravel()[i]:g} (t = sqrt(m^2 - 1) within [{T_RANGE[0]:g}, {T_RANGE[1]:g}]), "
+                         f"got {A.ravel()[i]!r}")
+    return _t_of_radius(A, lam)
 
 
 def _t_of_radius(A, lam):
@@ -402,50 +386,6 @@ def _t_of_radius(A, lam):
             return 10.0**s_new
         s = s_new
     return 10.0**s  # pragma: no cover - bisection converges well within 200 steps
-
-
-def md_pull_off(lam, control: str = "load") -> BranchPoint:
-    r"""Pull-off point of one Maugis-Dugdale asperity.
-
-    Parameters
-    ----------
-    lam : float
-        Maugis parameter :math:`\lambda > 0`.
-    control : {'load', 'displacement'}
-        ``'load'``: the minimum of :math:`P` over the whole curve (JKR: :math:`-3/2`,
-        DMT: :math:`-2`).  ``'displacement'``: the load at the end of the stable branch
-        (JKR: :math:`-5/6` at :math:`A = 6^{-1/3}`).
-
-    Returns
-    -------
-    BranchPoint
-        Where pull-off happens; ``P`` is the (negative) pull-off load :math:`P/(\pi w R)`.
-
-    References
-    ----------
-    Maugis (1992), Johnson & Greenwood (1997).
-    """
-    lam = float(check_lambda(scalar(lam, "lam")))
-    if control == "displacement":
-        return _branch_end(lam)
-    if control != "load":
-        raise ValueError(f"control must be 'load' or 'displacement', got {control!r}")
-    return _load_pull_off(lam)
-
-
-@functools.lru_cache(maxsize=1024)
-def _load_pull_off(lam: float) -> BranchPoint:
-    x0 = float(_x0(lam))
-    limit = BranchPoint(t=np.inf, A=0.0, P=-0.5 * np.pi * lam * x0 * x0,
-                        delta=-(4.0 / 3.0) * lam * x0)
-    s = _first_sign_change(lambda t: _curve(t, lam, True)[4], lam)
-    if s is None:
-        return limit
-    t = 10.0**s
-    A, P, D = _curve(np.float64(t), lam)
-    if P > limit.P:
-        return limit
-    return BranchPoint(t=t, A=float(A), P=float(P), delta=float(D))
 
 
 def md_lambda(R, w, E_star, sigma0):

@@ -14,23 +14,19 @@ area             :math:`A/(N\pi b^2) = \int\bar a^2\phi\,d\bar z`             Eq
 with :math:`\bar u = \bar z - \bar d`, from the end of the asperity's stable branch
 (:math:`\bar u = 0` for Hertz) to infinity.
 
-**How it is fast.**  Written in the penetration :math:`\bar u`, each integral is
-:math:`\int q(\bar u)\,\phi(\bar d + \bar u)\,d\bar u`: the per-asperity law
-:math:`q` does not depend on :math:`\bar d`.  A :class:`Tabulation` evaluates it once,
-on fixed Gauss-Legendre panels split at the law's breakpoints (branch end, Hurtado-Kim
-radii), and each separation then costs one row of exponentials and a matrix product.
-Derivatives with respect to :math:`\bar d` (for Newton's method) come from the same
-nodes.
+They are fast because the per-asperity law is tabulated once on fixed quadrature nodes in
+penetration (:class:`~asperity.tabulation.Tabulation`, re-exported here with
+:data:`D_MIN`, :data:`D_MAX` and :func:`check_separation`).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_poisson
-from .asperity_law import AsperityLaw, ModelParameters
+from ._validation import check_poisson
+from .asperity_law import ModelParameters, check_law
 from .heights import GAUSSIAN, HeightDistribution
-from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
+from .tabulation import D_MAX, D_MIN, Tabulation, check_separation
 
 __all__ = [
     "D_MIN",
@@ -42,131 +38,15 @@ __all__ = [
     "real_contact_area",
     "mean_pressure",
     "friction_coefficient",
+    "check_separation",
 ]
-
-#: Valid separations d/sigma: D_MAX beyond the end of the asperities' stable branch
-#: (30 for Hertz) every quantity underflows double precision.
-D_MIN, D_MAX = -1.0e4, 30.0
-
-# Column order of the tabulated integrands.
-_COLUMNS = ("contacts", "P", "F", "area")
-_BLOCK_SPAN = 24.0  # separations (in sigma) summed together
-_BLOCK_ROWS = 2000  # and at most this many at once, to bound memory
-
-
-def check_separation(d, name="d", d_max=D_MAX):
-    """Separations as a float array within [D_MIN, d_max] (d_max: where everything underflows)."""
-    d = as_float_array(d, name)
-    if np.any((d < D_MIN) | (d > d_max)):
-        raise ValueError(f"{name} (separation d/sigma) must lie in [{D_MIN:g}, {d_max:.6g}], "
-                         f"got values from {d.min():g} to {d.max():g}")
-    return d
-
-
-class Tabulation:
-    """The per-asperity integrands on fixed quadrature nodes, for separations in a range.
-
-    Parameters
-    ----------
-    params : ModelParameters
-        Model parameters.
-    d_min, d_max : float
-        Range of separations the nodes must serve.
-    heights : HeightDistribution
-        Asperity height distribution (default Gaussian, Eq 19).
-    """
-
-    def __init__(self, params: ModelParameters, d_min: float, d_max: float,
-                 heights: HeightDistribution = GAUSSIAN, law: AsperityLaw | None = None):
-        self.params = params
-        self.heights = heights
-        self.law = law if law is not None else AsperityLaw(params)
-        self.d_min, self.d_max = float(d_min), float(d_max)
-        law = self.law
-        z_top = heights.z_top
-        # For a separation d the integrand peaks at u* = max(u_end, -d) and is negligible
-        # (< phi(z_top) relative) beyond u* + z_top and below -d - z_top.
-        u_top = max(z_top - self.d_min, law.u_end + z_top)
-        u_bottom = -z_top - self.d_max
-        first = law.scale
-        for bp in law.breakpoints:
-            if bp > law.u_end:
-                first = min(first, (bp - law.u_end) / 3.0)
-        first = min(first, 0.2)  # the s^4 panel: keep the density smooth in s across it
-        edges = panel_edges(law.u_end, u_top, first, law.breakpoints, lo_clip=u_bottom)
-        u, w = composite_nodes(edges)
-        a, P = law.evaluate(u)
-        F = law.friction(a)
-        self.edges = edges
-        self.u = u
-        self.a_bar = a
-        self.weights = w[:, None] * np.stack([np.ones_like(u), P, F, a * a], axis=1)
-        self._split_panels()
-
-    def _split_panels(self):
-        """Group equal-width panels (their nodes share offsets) for the factorised sums."""
-        n = NODES_PER_PANEL
-        widths = np.diff(self.edges)
-        uniform = np.zeros(widths.size, dtype=bool)
-        uniform[1:] = widths[1:] == 1.0  # panel 0 carries the s^2 substitution
-        if uniform.sum() < 4:
-            uniform[:] = False
-        node_mask = np.repeat(uniform, n)
-        self.direct_u = self.u[~node_mask]
-        self.direct_w = self.weights[~node_mask]
-        left = self.edges[:-1][uniform]
-        x, _ = gauss_legendre(n)
-        self.centers = left + 0.5
-        self.offsets = x - 0.5
-        self.panel_w = self.weights[node_mask].reshape(left.size, n, self.weights.shape[1])
-
-    def covers(self, d_min, d_max) -> bool:
-        return self.d_min <= d_min and d_max <= self.d_max
-
-    def sums(self, d, order=0):
-        """``[S_0, .., S_order]``: the four integrals (columns) and their d-derivatives.
-
-        Separations are sorted into blocks spanning at most a few sigma; each block sums
-        only the nodes its height densities reach, so wide load ranges stay cheap.
-        """
-        d = np.asarray(d, dtype=float).ravel()
-        out = [np.zeros((d.size, 4)) for _ in range(order + 1)]
-        order_idx = np.argsort(d, kind="stable")
-        ds = d[order_idx]
-        z_top = self.heights.z_top
-        i = 0
-        while i < ds.size:
-            j = int(np.searchsorted(ds, ds[i] + _BLOCK_SPAN, side="right"))
-            j = min(j, i + _BLOCK_ROWS)
-            block = ds[i:j]
-            lo, hi = -block[-1] - z_top, max(self.law.u_end, -block[0]) + z_top
-            for k, part in enumerate(self._block_sums(block, lo, hi, order)):
-                out[k][order_idx[i:j]] = part
-            i = j
-        return out
-
-    def _block_sums(self, block, lo, hi, order):
-        h = self.heights
-        a, b = np.searchsorted(self.direct_u, [lo, hi])
-        parts = [h.weighted_sums(block, self.direct_u[a:b], self.direct_w[a:b], order)]
-        a, b = np.searchsorted(self.centers, [lo - 1.0, hi + 1.0])
-        if b > a:
-            parts.append(h.panel_sums(block, self.centers[a:b], self.offsets, self.panel_w[a:b], order))
-        return [sum(p[k] for p in parts) for k in range(order + 1)]
-
-    def evaluate(self, d):
-        """Dict of contacts, P, F, area at separations ``d`` (any shape)."""
-        d = np.asarray(d, dtype=float)
-        s = self.sums(d)[0]
-        return {name: s[:, i].reshape(d.shape) for i, name in enumerate(_COLUMNS)}
-
 
 def _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights):
     kwargs = {} if friction is None else {"friction": friction}
     params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
     if not isinstance(heights, HeightDistribution):
         raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
-    law = AsperityLaw(params)
+    law = check_law(None, params)
     d = check_separation(d, d_max=D_MAX - law.u_end)
     tab = Tabulation(params, float(d.min()), float(d.max()), heights, law=law)
     return tab.evaluate(d), params
@@ -176,26 +56,53 @@ def contact_fraction(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
                      heights=GAUSSIAN):
     r"""Fraction of asperities in contact, :math:`n/N = \int\phi(\bar z)\,d\bar z` (Eq 5).
 
-    With adhesion the lower limit is the end of the stable branch (negative penetration),
-    so adhesive contacts outnumber Hertzian ones at the same separation.
+    .. math::
+        \frac nN = \int_{\bar d + \bar u_{end}}^\infty \phi(\bar z)\,d\bar z
+
+    With adhesion the lower limit is the end of the stable branch (negative penetration
+    :math:`\bar u_{end}`), so adhesive contacts outnumber Hertzian ones at the same separation.
 
     Parameters
     ----------
     d : array_like
-        Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat.
-    alpha, beta, gamma, nu, h_over_b, friction :
-        Model parameters, see :class:`~asperity.asperity_law.ModelParameters`.
+        Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
+        :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
+        without adhesion).
+    alpha : float
+        Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
+    beta : float
+        Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
+    gamma : float
+        Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
+    nu : float
+        Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
+    h_over_b : float
+        Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
+    friction : FrictionLaw, optional
+        Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
-        Height statistics (default: Gaussian, Eq 19).
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
 
     Returns
     -------
     ndarray
-        :math:`n/N`, same shape as ``d``.
+        :math:`n/N` (dimensionless, in [0, 1]), same shape as ``d``.
+
+    Raises
+    ------
+    ValueError
+        If a parameter is not a real, finite scalar in its range, the parameters give a
+        Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
+        or a separation lies outside its range.
+
+    Examples
+    --------
+    >>> round(float(contact_fraction(0.0, 0.01, 1000.0)), 12)  # Hertz: the upper half of phi
+    0.5
 
     References
     ----------
-    Adams et al., Eq (5); Greenwood & Williamson (1966).
+    Adams et al., Eqs (5), (18) (lower limit), (19); Greenwood & Williamson (1966).
     """
     return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[0]["contacts"]
 
@@ -210,7 +117,47 @@ def normal_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=No
         \gamma > 0:\ \bar P = \frac1{\hat P}\int_{\bar d+\bar u_{end}}^\infty
             P_M\big((\bar z-\bar d)/\hat\delta\big)\phi\,d\bar z
 
-    Positive is compressive.  See :func:`contact_fraction` for the parameters.
+    with :math:`P_M` the stable-branch Maugis-Dugdale load (:func:`~asperity.maugis_dugdale.md_solve`)
+    and the corrected :math:`\hat P = (1-\nu)\alpha/(2\pi\beta\gamma)` (docs/decisions.md).
+
+    Parameters
+    ----------
+    d : array_like
+        Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
+        :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
+        without adhesion).
+    alpha : float
+        Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
+    beta : float
+        Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
+    gamma : float
+        Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
+    nu : float
+        Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
+    h_over_b : float
+        Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
+    friction : FrictionLaw, optional
+        Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
+    heights : HeightDistribution
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
+
+    Returns
+    -------
+    ndarray
+        :math:`P/(NGb^2)`, positive compressive, negative tensile; same shape as ``d``.
+
+    Raises
+    ------
+    ValueError
+        If a parameter is not a real, finite scalar in its range, the parameters give a
+        Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
+        or a separation lies outside its range.
+
+    Examples
+    --------
+    >>> P = normal_force([0.0, 1.0], 0.01, 1000.0)  # Hertz: decreasing with separation
+    >>> bool(P[0] > P[1] > 0)
+    True
 
     References
     ----------
@@ -224,15 +171,56 @@ def friction_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=
     r"""Friction force per asperity :math:`\bar F = F/(NGb^2)` (Eqs 9-10).
 
     .. math::
-        \bar F = 2\pi\int\bar\tau_f(\bar a)\,\bar a^2\,\phi(\bar z)\,d\bar z
+        \bar F = 2\pi\int_{\bar d + \bar u_{end}}^\infty\bar\tau_f(\bar a)\,\bar a^2\,\phi(\bar z)\,d\bar z
 
-    with the Hurtado-Kim stress evaluated at the (adhesive, if gamma > 0) contact radius;
-    the integral is split at the radii :math:`\bar a_1`, :math:`\bar a_2`.  See
-    :func:`contact_fraction` for the parameters.
+    with the friction stress :math:`\bar\tau_f = \tau_f/G^*` (Hurtado-Kim, Eq 2, by default)
+    at the contact radius :math:`\bar a = a/b` (Hertz, Eq 8, or Maugis-Dugdale through Eq 17);
+    the integral is split where the radius crosses :math:`\bar a_1`, :math:`\bar a_2`.
+
+    Parameters
+    ----------
+    d : array_like
+        Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
+        :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
+        without adhesion).
+    alpha : float
+        Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
+    beta : float
+        Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
+    gamma : float
+        Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
+    nu : float
+        Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
+    h_over_b : float
+        Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
+    friction : FrictionLaw, optional
+        Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
+    heights : HeightDistribution
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
+
+    Returns
+    -------
+    ndarray
+        :math:`F/(NGb^2)` (>= 0), same shape as ``d``.
+
+    Raises
+    ------
+    ValueError
+        If a parameter is not a real, finite scalar in its range, the parameters give a
+        Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
+        or a separation lies outside its range.
+
+    Examples
+    --------
+    >>> from asperity.friction_stress import ConstantShear
+    >>> F = friction_force(0.5, 0.01, 1000.0, friction=ConstantShear(0.01))
+    >>> A = real_contact_area(0.5, 0.01, 1000.0)
+    >>> round(float(F / (2 * 3.141592653589793 * 0.01 * A)), 12)  # constant stress: F = 2 pi tau A
+    1.0
 
     References
     ----------
-    Adams et al., Eqs (9), (10).
+    Adams et al., Eqs (2), (9), (10); Hurtado & Kim (1999).
     """
     return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[0]["F"]
 
@@ -241,12 +229,55 @@ def real_contact_area(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, fricti
                       heights=GAUSSIAN):
     r"""Real contact area per asperity :math:`A/(N\pi b^2) = \int\bar a^2\phi\,d\bar z` (Eq 21).
 
-    Without adhesion this equals :math:`\beta^2\int(\bar z-\bar d)\phi\,d\bar z`.  See
-    :func:`contact_fraction` for the parameters.
+    .. math::
+        \frac{A}{N\pi b^2} = \int_{\bar d + \bar u_{end}}^\infty \bar a^2\,\phi(\bar z)\,d\bar z
+
+    Without adhesion :math:`\bar a^2 = \beta^2(\bar z - \bar d)` (Eq 8), so this is
+    :math:`\beta^2\int_{\bar d}^\infty(\bar z-\bar d)\phi\,d\bar z`.
+
+    Parameters
+    ----------
+    d : array_like
+        Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
+        :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
+        without adhesion).
+    alpha : float
+        Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
+    beta : float
+        Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
+    gamma : float
+        Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
+    nu : float
+        Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
+    h_over_b : float
+        Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
+    friction : FrictionLaw, optional
+        Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
+    heights : HeightDistribution
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
+
+    Returns
+    -------
+    ndarray
+        :math:`A/(N\pi b^2)` (>= 0), same shape as ``d``.
+
+    Raises
+    ------
+    ValueError
+        If a parameter is not a real, finite scalar in its range, the parameters give a
+        Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
+        or a separation lies outside its range.
+
+    Examples
+    --------
+    >>> import math
+    >>> area = float(real_contact_area(0.0, 0.01, 1000.0))  # Hertz at d = 0: beta^2 / sqrt(2 pi)
+    >>> round(area / (1e6 / math.sqrt(2 * math.pi)), 12)
+    1.0
 
     References
     ----------
-    Adams et al., Eq (21).
+    Adams et al., Eqs (8), (21).
     """
     return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[0]["area"]
 

@@ -1,0 +1,159 @@
+"""Load control (asperity.load_control): each step on its own, against the integrals it inverts."""
+
+import numpy as np
+import pytest
+
+from asperity.asperity_law import ModelParameters
+from asperity.load_control import (
+    bracket_low,
+    branch_guess,
+    force_grid,
+    invert_branch,
+    stable_branch,
+    start_separation,
+)
+from asperity.pull_off_search import find_pull_off
+from asperity.tabulation import D_MIN, Tabulation
+
+DRY = ModelParameters(0.01, 1000.0)
+WET = ModelParameters(0.003, 1000.0, 1e-3)
+
+
+def force(tab, d):
+    return tab.sums(np.atleast_1d(np.asarray(d, dtype=float)))[0][:, 1]
+
+
+def test_start_separation_is_the_hertz_estimate():
+    c = (8 / 3) / 0.7 * 0.01 * 1e6
+    for P in (1e5, 1e7):
+        assert start_separation(DRY, P, 10.0) == pytest.approx(-((P / c) ** (2 / 3)) - 2.0, rel=1e-15)
+    assert start_separation(DRY, -5.0, 10.0) == -3.0  # non-positive loads: the default bracket
+    assert start_separation(DRY, 1.0, -2.5) == -3.5  # at least one sigma below d_hi
+    with pytest.raises(ValueError, match="too large"):
+        start_separation(DRY, 1e20, 10.0)
+    with pytest.raises(ValueError, match="params"):
+        start_separation({"alpha": 0.01}, 1.0, 10.0)
+
+
+@pytest.mark.parametrize("P_max", [1.0, 1e6, 3e8])
+def test_bracket_low_carries_the_load_and_widens_the_tabulation(P_max):
+    tab = Tabulation(DRY, -3.0, 10.0)
+    d0 = start_separation(DRY, P_max, 10.0)
+    d_lo, wide = bracket_low(tab, P_max, d0, 10.0)
+    assert d_lo <= d0 and force(wide, d_lo)[0] > P_max
+    assert wide.covers(d_lo, 10.0) and wide.law is tab.law
+    with pytest.raises(ValueError, match="too large"):
+        bracket_low(tab, 1e30, -9000.0, 10.0)
+
+
+def test_bracket_low_steps_down_to_the_first_separation_carrying_the_load():
+    tab = Tabulation(DRY, -3.0, 10.0)
+    d_lo, wide = bracket_low(tab, 1e5, 5.0, 10.0)
+    tried = [5.0]
+    while tried[-1] > d_lo:
+        tried.append(tried[-1] - max(2.0, 0.5 * abs(tried[-1])))
+    assert tried[-1] == d_lo and len(tried) > 3
+    assert force(wide, d_lo)[0] > 1e5 and np.all(force(wide, tried[:-1]) <= 1e5)
+
+
+def test_force_grid_derivative_is_the_slope():
+    tab = Tabulation(WET, -3.0, 10.0)
+    grid, P, dP = force_grid(tab, -2.0, 4.0, n=13)
+    h = 1e-5
+    fd = (force(tab, grid + h) - force(tab, grid - h)) / (2 * h)
+    np.testing.assert_allclose(dP, fd, rtol=1e-6, atol=1e-6 * np.abs(P).max())
+    np.testing.assert_allclose(P, force(tab, grid), rtol=0)
+    assert force_grid(tab, -2.0, 4.0)[0].size == 120  # one point per 0.05 sigma
+    for bad in (1, 2.5, True, "3"):
+        with pytest.raises(ValueError, match="n"):
+            force_grid(tab, -2.0, 4.0, n=bad)
+    with pytest.raises(ValueError, match="serves"):
+        force_grid(tab, -5.0, 4.0)
+    with pytest.raises(ValueError, match="d_lo must be < d_hi"):
+        force_grid(tab, 4.0, -2.0)
+    with pytest.raises(ValueError, match="tab"):
+        force_grid("tab", -2.0, 4.0)
+
+
+def test_stable_branch_ends_at_pull_off():
+    tab = Tabulation(WET, -3.0, 10.0)
+    br = stable_branch(tab, -3.0, 10.0)
+    po = find_pull_off(tab, -3.0, 10.0)
+    # its own grid (every 0.05 sigma) locates the same minimum as find_pull_off's (0.02)
+    assert br.pull_off.force == pytest.approx(po.force, rel=1e-13) and br.pull_off.d == pytest.approx(po.d, abs=1e-6)
+    assert br.grid[-1] == br.pull_off.d and br.P[-1] == -br.pull_off.force and br.dP[-1] == 0.0
+    assert np.all(np.diff(br.P) < 0) and np.all(np.diff(br.grid) > 0) and br.tab is tab
+    # beyond the branch end the force rises again
+    assert force(tab, po.d + 0.1)[0] > -po.force
+    # a pull-off passed in (a cached one) is reused as is
+    assert stable_branch(tab, -3.0, 10.0, pull_off=po).pull_off is po
+
+
+def test_stable_branch_without_adhesion_extends_for_tiny_loads():
+    tab = Tabulation(DRY, -3.0, 10.0)
+    short = stable_branch(tab, -3.0, 10.0)
+    assert short.pull_off is None and short.grid[-1] == pytest.approx(10.0)
+    long = stable_branch(tab, -3.0, 10.0, d_top=30.0, P_min=1e-40)
+    assert long.grid[-1] == 30.0 and long.tab.covers(-3.0, 30.0) and not tab.covers(-3.0, 30.0)
+    assert np.all(np.diff(long.P) <= 0)
+
+
+@pytest.mark.parametrize("params", [DRY, WET])
+def test_invert_falling_branch(params):
+    tab = Tabulation(params, -3.0, 10.0)
+    br = stable_branch(tab, -3.0, 10.0)
+    P = np.linspace(br.P[-1], br.P[0], 41)[1:-1]
+    d, sums = invert_branch(tab, P, br.grid, br.P, br.dP)
+    np.testing.assert_allclose(sums[:, 1], P, rtol=1e-10, atol=1e-12 * np.abs(br.P).max())
+    np.testing.assert_allclose(force(tab, d), P, rtol=1e-10, atol=1e-12 * np.abs(br.P).max())
+    np.testing.assert_allclose(sums, tab.sums(d)[0], rtol=1e-12, atol=1e-300)  # the Taylor-carried integrals
+    assert np.all(np.diff(d) < 0)
+
+
+def test_invert_rising_branch_beyond_pull_off():
+    # Beyond pull-off the force rises from -pull-off back towards 0: a branch a cycle meets
+    # when it pulls the surfaces apart under displacement control.
+    tab = Tabulation(WET, -3.0, 10.0)
+    po = find_pull_off(tab, -3.0, 10.0)
+    grid, Pg, dPg = force_grid(tab, po.d + 1e-3, 6.0)
+    assert Pg[0] < Pg[-1]
+    P = np.linspace(Pg[0], Pg[-1], 25)
+    d, sums = invert_branch(tab, P, grid, Pg, dPg)
+    np.testing.assert_allclose(force(tab, d), P, rtol=1e-9, atol=1e-9 * po.force)
+    assert np.all(d > po.d) and np.all(np.diff(d) > 0)
+
+
+def test_invert_branch_rejects_bad_input():
+    tab = Tabulation(DRY, -3.0, 10.0)
+    grid, Pg, dPg = force_grid(tab, -3.0, 5.0)
+    with pytest.raises(ValueError, match="P \\(load\\) must lie between"):
+        invert_branch(tab, [Pg[0] * 2], grid, Pg, dPg)
+    with pytest.raises(ValueError, match="grid must be increasing"):
+        invert_branch(tab, [1.0], grid[::-1], Pg, dPg)
+    with pytest.raises(ValueError, match="grid must be increasing"):
+        invert_branch(tab, [1.0], grid, Pg[:-1], dPg)
+    with pytest.raises(ValueError, match="serves"):
+        invert_branch(Tabulation(DRY, 0.0, 10.0), [1.0], grid, Pg, dPg)
+    for bad in (None, "1", [np.nan], 1j):
+        with pytest.raises(ValueError, match="^P"):
+            invert_branch(tab, bad, grid, Pg, dPg)
+
+
+def test_branch_guess_is_exact_where_asinh_of_the_force_is_linear():
+    # The Hermite cubic reproduces a linear function, so where y = asinh(P/s) is linear in d
+    # the guess is the root itself.
+    P = np.array([0.3, 2.0, 20.0])
+    s = 1e-3 * P.min()
+    grid = np.linspace(0.0, 5.0, 11)
+    y = 12.0 - 2.5 * grid
+    Pg, dPg = s * np.sinh(y), -2.5 * s * np.cosh(y)
+    a, b, x = branch_guess(P, grid, Pg, dPg)
+    exact = (12.0 - np.arcsinh(P / s)) / 2.5
+    np.testing.assert_allclose(x, exact, rtol=1e-12)
+    assert np.all((a <= exact) & (exact <= b)) and np.all(b - a == pytest.approx(0.5))
+    with pytest.raises(ValueError, match="grid"):
+        branch_guess(P, grid[::-1], Pg, dPg)
+
+
+def test_d_min_is_the_floor():
+    assert D_MIN == -1e4
