@@ -31,7 +31,7 @@ LAYERS = [
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),
-    ("physical", {"materials", "physical", "surface", "regimes", "topography"}),
+    ("physical", {"materials", "bodies", "physical", "physical_results", "surface", "regimes", "topography"}),
     ("applications", {"fit", "sweeps", "validation"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]

@@ -155,7 +155,7 @@ def test_adhesion_switch(surface):
     assert hertz.pull_off().force == 0.0 and not hertz.pull_off().exists
     with pytest.raises(ValueError, match=r"'mica' has no Burgers vector"):
         PhysicalContact("mica", surface, adhesion=False)
-    with pytest.raises(ValueError, match="surface must be"):
+    with pytest.raises(TypeError, match="surface must be"):
         PhysicalContact("Au", (SIGMA, RADIUS, ETA, AREA))
 
 

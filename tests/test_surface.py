@@ -50,9 +50,12 @@ def test_surface_from_groups_is_eq20():
 
 
 def test_field_names_are_the_registry_names():
-    assert [f for f in Surface.__dataclass_fields__] == ["sigma_s", "R", "eta", "area"]
-    for name in Surface.__dataclass_fields__:
+    # The quantities, then a label that is not one (and not compared).
+    assert [f for f in Surface.__dataclass_fields__] == ["sigma_s", "R", "eta", "area", "source"]
+    for name in ("sigma_s", "R", "eta", "area"):
         assert name in PHYSICAL_PARAMETERS
+    assert not Surface.__dataclass_fields__["source"].compare
+    assert Surface(1e-9, 1e-6, 1e12, 1e-6, source="a") == Surface(1e-9, 1e-6, 1e12, 1e-6)
 
 
 def test_strings_with_units():

@@ -36,6 +36,7 @@ _EXPORTS = {
     "load_curve": "curves",
     "pull_off": "curves",
     "separation_curve": "curves",
+    "AreaFractionWarning": "physical_results",
     "ConstantShear": "friction_stress",
     "HurtadoKim": "friction_stress",
     "GAUSSIAN": "heights",
@@ -56,6 +57,7 @@ _EXPORTS = {
 #: Any other public submodule (one added later) is found the same way.
 _SUBMODULES = (
     "asperity_law",
+    "bodies",
     "cli",
     "curves",
     "dmt",
@@ -68,10 +70,13 @@ _SUBMODULES = (
     "maugis_dugdale",
     "multi_asperity",
     "physical",
+    "physical_results",
     "quadrature",
     "quantities",
     "reference",
+    "regimes",
     "studies",
+    "surface",
     "topography",
     "units",
 )
@@ -84,6 +89,7 @@ __all__ = [
     "load_curve",
     "pull_off",
     "separation_curve",
+    "AreaFractionWarning",
     "ConstantShear",
     "HurtadoKim",
     "GAUSSIAN",

@@ -26,6 +26,8 @@ __all__ = [
     "check_scalar_poisson",
     "check_scalar_positive",
     "check_optional_positive",
+    "check_text",
+    "check_bool",
     "scalar",
 ]
 
@@ -184,6 +186,26 @@ def check_scalar_poisson(value, name: str = "nu") -> float:
     if not -1.0 < x < 0.5:
         raise ValueError(f"{name} (Poisson's ratio) must lie in (-1, 0.5), got {value!r}")
     return x
+
+
+def check_text(value, name: str) -> str:
+    """``value`` if it is a string; otherwise a :class:`TypeError` naming ``name``."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, got {type(value).__name__} {_short_repr(value)}")
+    return value
+
+
+def check_bool(value, name: str) -> bool:
+    """``value`` if it is a boolean (Python or NumPy); otherwise a :class:`TypeError` naming ``name``."""
+    if not isinstance(value, bool | np.bool_):
+        raise TypeError(f"{name} must be True or False, got {type(value).__name__} {_short_repr(value)}")
+    return bool(value)
+
+
+def _short_repr(value) -> str:
+    import reprlib
+
+    return reprlib.repr(value)
 
 
 def _reject_non_real(value, name: str) -> None:

@@ -44,10 +44,11 @@ from __future__ import annotations
 import csv
 import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from importlib import resources
 
-from ._validation import check_optional_positive, check_scalar_poisson, check_scalar_positive
+from ._validation import check_optional_positive, check_scalar_poisson, check_scalar_positive, check_text
+from .units import format_si
 
 __all__ = ["Material", "as_material", "material", "material_names", "material_table", "pair"]
 
@@ -87,6 +88,9 @@ class Material:
         :math:`h = w/\sigma_0`).  Giving both requires :math:`w = \sigma_0 h`.
     components : tuple of str
         For a :func:`pair`, the names of the two bodies; empty for one body.
+    bodies : tuple of Material
+        For a :func:`pair`, the two bodies themselves (their own ``E`` and ``nu``); empty
+        for one body on a rigid flat.
 
     Attributes
     ----------
@@ -112,17 +116,26 @@ class Material:
     h: float | None = None
     sigma0: float | None = None
     components: tuple[str, ...] = ()
+    bodies: tuple[Material, ...] = field(default=(), repr=False, compare=False)
 
     def __post_init__(self):
         setattr_ = functools.partial(object.__setattr__, self)
-        setattr_("name", str(self.name))
+        setattr_("name", check_text(self.name, "name"))
         setattr_("E", check_scalar_positive(self.E, "E", "Pa"))
         setattr_("nu", check_scalar_poisson(self.nu))
         setattr_("b", check_optional_positive(self.b, "b", "m"))
         setattr_("w", check_optional_positive(self.w, "w", "J/m^2", allow_zero=True))
         setattr_("h", check_optional_positive(self.h, "h", "m"))
         setattr_("sigma0", check_optional_positive(self.sigma0, "sigma0", "Pa"))
-        setattr_("components", tuple(str(c) for c in self.components))
+        if isinstance(self.components, str) or not isinstance(self.components, tuple | list):
+            raise TypeError(f"components must be a tuple of two names, got {self.components!r}")
+        setattr_("components", tuple(check_text(c, "components") for c in self.components))
+        if not isinstance(self.bodies, tuple | list) or len(self.bodies) not in (0, 2) or \
+                not all(isinstance(x, Material) for x in self.bodies):
+            raise TypeError(f"bodies must be () or a tuple of two Materials, got {self.bodies!r}")
+        setattr_("bodies", tuple(self.bodies))
+        if self.bodies and not self.components:
+            setattr_("components", tuple(x.name for x in self.bodies))
         self._check_dugdale()
 
     def _check_dugdale(self):
@@ -151,6 +164,34 @@ class Material:
     def G_star(self) -> float:
         """Effective shear modulus 2G in Pa (friction stresses are tau_f/G*)."""
         return 2.0 * self.G
+
+    @property
+    def is_pair(self) -> bool:
+        """True for two elastic bodies (:func:`pair`), False for one body on a rigid flat."""
+        return bool(self.bodies)
+
+    def body_dict(self) -> dict:
+        """This body alone: ``{'name', 'E_Pa', 'nu', 'rigid'}`` (``rigid`` is False)."""
+        return {"name": self.name, "E_Pa": self.E, "nu": self.nu, "rigid": False}
+
+    def describe(self) -> str:
+        """One line naming the bodies in contact, e.g. ``'Au (E 78 GPa, nu 0.44) on a rigid flat'``."""
+        def body(m):
+            return f"{m.name} (E {format_si(m.E, 'Pa')}, nu {m.nu:.4g})"
+        if self.bodies:
+            return f"{body(self.bodies[0])} on {body(self.bodies[1])}"
+        return f"{body(self)} on a rigid flat"
+
+    def to_dict(self) -> dict:
+        """Plain dict for strict JSON: ``name``, ``body1``, ``body2`` (``{'name': 'rigid flat',
+        'rigid': True, ...}`` for one body), the equivalent body's ``E_Pa``, ``nu``, ``E_star_Pa``,
+        ``G_star_Pa`` and ``b_m``, ``w_J_m2``, ``h_m``, ``sigma0_Pa`` (None where unknown)."""
+        one, two = self.bodies if self.bodies else (self, None)
+        rigid = {"name": "rigid flat", "E_Pa": None, "nu": None, "rigid": True}
+        return {"name": self.name, "body1": one.body_dict(), "body2": rigid if two is None else two.body_dict(),
+                "E_Pa": self.E, "nu": self.nu, "E_star_Pa": self.E_star, "G_star_Pa": self.G_star,
+                "b_m": self.b, "w_J_m2": self.w, "h_m": self.h, "sigma0_Pa": self.sigma0}
+
 
 
 def as_material(body, name: str = "material") -> Material:
@@ -243,13 +284,16 @@ def pair(first, second, *, w=None, b=None, h=None, name: str | None = None) -> M
     Johnson, *Contact Mechanics* (1985) §4.2; Adams et al., Eq (2) (:math:`G^*`).
     """
     one, two = as_material(first, "first"), as_material(second, "second")
+    for body, what in ((one, "first"), (two, "second")):
+        if body.bodies:
+            raise ValueError(f"{what} must be one body, got the pair {body.name!r}")
     g_star = 2.0 * one.G * two.G / (one.G + two.G)
     label = name or f"{one.name}/{two.name}"
     nu_eff = _check_effective_poisson(_effective_poisson(one, two), label)
     if w is None and one.name.lower() == two.name.lower():
         w = one.w
     return Material(label, E=(1.0 + nu_eff) * g_star, nu=nu_eff, b=_pair_b(one, two, b), w=w, h=h,
-                    components=(one.name, two.name))
+                    components=(one.name, two.name), bodies=(one, two))
 
 
 # -- the table ---------------------------------------------------------------------------
@@ -285,24 +329,41 @@ def material_names() -> list[str]:
     return [row["name"] for row in _rows()]
 
 
-def _find(name: str) -> dict:
-    if not isinstance(name, str):
-        raise ValueError(f"material name must be a string, got {name!r}")
+def _find(name: str) -> dict | None:
     key = name.strip().lower()
     for row in _rows():
         if row["name"].lower() == key:
             return row
-    raise ValueError(f"unknown material {name!r}; known: {', '.join(material_names())}")
+    return None
+
+
+def _unknown(name: str) -> ValueError:
+    return ValueError(f"unknown material {name!r}; known: {', '.join(material_names())} "
+                      "(or two of them as 'A/B')")
 
 
 def material(name: str) -> Material:
-    """The :class:`Material` of a table row (case-insensitive name).
+    """The :class:`Material` of a table row (case-insensitive name), or of two rows ``'A/B'``.
 
-    A pair row (e.g. ``'Au/Au'``, ``'Au/mica'``) gives :func:`pair` of its components with
-    the row's work of adhesion (None where the table has none).
+    A single body (``'Au'``) is that body **on a rigid flat**.  A pair row (e.g.
+    ``'Au/Au'``, ``'Au/mica'``) gives :func:`pair` of its components with the row's work
+    of adhesion (None where the table has none).  Any other ``'A/B'`` of two table names
+    gives :func:`pair` of the two bodies: its work of adhesion is the body's own for
+    ``A == B`` and unknown (None) otherwise, and the Burgers vectors must agree.
+
+    Parameters
+    ----------
+    name : str
+        A name from :func:`material_names`, or ``'A/B'`` of two of them.
+
+    Returns
+    -------
+    Material
 
     Raises
     ------
+    TypeError
+        If ``name`` is not a string.
     ValueError
         For an unknown name (the message lists the known ones) or a row without ``E``/``nu``.
 
@@ -310,12 +371,24 @@ def material(name: str) -> Material:
     --------
     >>> material("au").b
     2.885e-10
+    >>> material("Au/Au").components
+    ('Au', 'Au')
     """
+    check_text(name, "name")
     row = _find(name)
+    if row is None:
+        parts = name.split("/")
+        if len(parts) != 2 or not all(p.strip() for p in parts) or any(_find(p) is None for p in parts):
+            raise _unknown(name)
+        try:
+            return pair(*(material(p.strip()) for p in parts))
+        except ValueError as err:
+            raise ValueError(f"{name}: {err} (e.g. asperity.bodies.contact_material({name!r}, b=...))") from None
     if row["kind"] == "pair":
         first, second = row["components"].split(";")
         return pair(first, second, w=row["work_of_adhesion_J_m2"], name=row["name"])
     if row["E_Pa"] is None or row["nu"] is None:
         raise ValueError(f"material {row['name']!r} has no E/nu in the table")
     return Material(row["name"], E=row["E_Pa"], nu=row["nu"], b=row["b_m"], w=row["work_of_adhesion_J_m2"])
+
 

@@ -19,6 +19,17 @@ Every physical input accepts a float in SI units or a pint ``Quantity``
 
 This module holds the contact (:class:`PhysicalContact`) and its results
 (:class:`PhysicalCurve`, :class:`PhysicalPullOff`, columns in :data:`PHYSICAL_COLUMNS`).
+A contact states what it computes (:meth:`PhysicalContact.describe`,
+:meth:`PhysicalContact.to_dict`): both bodies, :math:`E^*`, :math:`G^*`, :math:`w`,
+:math:`h`, :math:`b`, the groups, :math:`\lambda` with its adhesion regime and :math:`N`.
+
+**The GW assumption.**  Greenwood-Williamson asperities are independent, which needs a
+real contact area :math:`A` well below the nominal area :math:`A_0`.  Every curve carries
+``area_fraction`` :math:`= A/A_0`; a call whose largest fraction passes
+:data:`AREA_FRACTION_CAUTION` (10 %: neighbouring contacts interact, the results degrade)
+or :data:`AREA_FRACTION_LIMIT` (100 %: more contact than surface, not physical) issues one
+:class:`AreaFractionWarning`, a :class:`UserWarning` users can filter
+(``warnings.simplefilter("ignore", asperity.AreaFractionWarning)``) or turn into errors.
 The surface lives in :mod:`asperity.surface` (:class:`~asperity.surface.Surface`,
 :func:`~asperity.surface.surface_from_groups`) and the regime helpers in
 :mod:`asperity.regimes` (:func:`~asperity.regimes.tabor_parameter`,
@@ -37,22 +48,29 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import groups
-from ._csv import columns_to_csv, columns_to_dataframe
-from ._validation import as_float_array, check_nonnegative, check_positive, check_scalar_positive
-from .curves import CurveResult, Model, PullOff
-from .friction_stress import ConstantShear, FrictionLaw
+from ._validation import as_float_array, check_bool, check_nonnegative, check_positive, check_scalar_positive
+from .curves import CurveResult, Model
+from .friction_stress import ConstantShear, FrictionLaw, HurtadoKim
 from .heights import GAUSSIAN, HeightDistribution
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
-from .quantities import CURVE_COLUMNS
+from .physical_results import (
+    AREA_FRACTION_CAUTION,
+    AREA_FRACTION_LIMIT,
+    PHYSICAL_COLUMNS,
+    AreaFractionWarning,
+    PhysicalCurve,
+    PhysicalPullOff,
+    warn_area_fraction,
+)
+from .quantities import PHYSICAL_PARAMETERS
 from .regimes import adhesion_regime, fuller_tabor_parameter, maugis_parameter, tabor_parameter
 from .surface import Surface, surface_from_groups
-from .units import to_si
+from .units import format_si, to_si
 
 __all__ = [
     "Surface",
@@ -60,6 +78,10 @@ __all__ = [
     "PhysicalCurve",
     "PhysicalPullOff",
     "PHYSICAL_COLUMNS",
+    "AreaFractionWarning",
+    "AREA_FRACTION_CAUTION",
+    "AREA_FRACTION_LIMIT",
+    "warn_area_fraction",
     "surface_from_groups",
     "work_of_adhesion_from_gamma",
     "tabor_parameter",
@@ -68,71 +90,10 @@ __all__ = [
     "fuller_tabor_parameter",
 ]
 
-#: Columns of a :class:`PhysicalCurve`: attribute -> (CSV/DataFrame column, SI unit, meaning),
-#: derived from :data:`asperity.quantities.CURVE_COLUMNS`.
-PHYSICAL_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in CURVE_COLUMNS.items()}
-
-
 def _out(x):
     """A 0-d result as float, otherwise the array."""
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
-
-
-@dataclass(frozen=True)
-class PhysicalCurve:
-    """A curve in SI units; columns and units in :data:`PHYSICAL_COLUMNS`.
-
-    ``d`` [m], ``P`` [N], ``F`` [N], ``mu`` [-], ``area`` [m^2], ``pressure`` [Pa] (= P/area),
-    ``contacts`` [number of asperities].  ``dimensionless`` is the model's own
-    :class:`~asperity.CurveResult`; ``parameters`` the inputs and groups.
-    """
-
-    d: np.ndarray
-    P: np.ndarray
-    F: np.ndarray
-    mu: np.ndarray
-    area: np.ndarray
-    pressure: np.ndarray
-    contacts: np.ndarray
-    dimensionless: CurveResult = field(repr=False, compare=False)
-    parameters: dict = field(default_factory=dict, compare=False)
-    nominal_area: float = math.nan
-
-    @property
-    def area_fraction(self) -> np.ndarray:
-        """Real over nominal contact area.  The GW model (independent asperities) needs it
-        well below 1; above ~0.1 neighbouring contacts interact and the results degrade."""
-        return self.area / self.nominal_area
-
-    def __len__(self) -> int:
-        return int(np.size(self.d))
-
-    def columns(self) -> dict[str, np.ndarray]:
-        """Column name (with unit, e.g. ``'P_N'``) -> array, in the order of :data:`PHYSICAL_COLUMNS`."""
-        return {col: np.asarray(getattr(self, attr)) for attr, (col, _, _) in PHYSICAL_COLUMNS.items()}
-
-    def to_dataframe(self):
-        """The curve as a :class:`pandas.DataFrame` (needs pandas); units in ``attrs['units']``."""
-        units = {col: unit for col, unit, _ in PHYSICAL_COLUMNS.values()}
-        return columns_to_dataframe(self.columns(), {**self.parameters, "units": units})
-
-    def to_csv(self, path_or_buffer=None) -> str | None:
-        """Write CSV (header of column names with units, e.g. ``d_m,P_N,...``); return it if no path."""
-        return columns_to_csv(self.columns(), path_or_buffer)
-
-
-@dataclass(frozen=True)
-class PhysicalPullOff:
-    """Pull-off force in newtons (>= 0) and the separation in metres where it occurs.
-
-    ``d`` is NaN when ``exists`` is False.  ``dimensionless`` is the model's :class:`~asperity.PullOff`.
-    """
-
-    force: float
-    d: float
-    exists: bool
-    dimensionless: PullOff = field(repr=False, compare=False)
 
 
 class PhysicalContact:
@@ -141,8 +102,12 @@ class PhysicalContact:
     Parameters
     ----------
     material : Material or str
-        The elastic body (a name is looked up in the table); for two elastic bodies pass
-        :func:`asperity.materials.pair`.  Needs a Burgers vector ``b``.
+        The elastic body: a table name, ``'Au'`` (gold **on a rigid flat**, the paper's
+        set-up) or ``'Au/Au'`` (**two** gold bodies: :math:`E^*` and :math:`G^*` halve, so
+        the forces differ), or a :class:`~asperity.materials.Material`;
+        :func:`asperity.bodies.contact_material` builds one with values of one's own
+        (``w``, ``E``, ``nu``, a second body, ``b``, ``h``) and
+        :func:`asperity.materials.pair` two bodies.  Needs a Burgers vector ``b``.
     surface : Surface
         Summit statistics and nominal area.
     h : float or pint.Quantity, optional
@@ -160,27 +125,39 @@ class PhysicalContact:
     heights : HeightDistribution
         Summit heights in units of :math:`\sigma_s` (default Gaussian, Eq 19).
 
+    Raises
+    ------
+    TypeError
+        If ``material``, ``surface``, ``adhesion`` or ``heights`` has the wrong type.
+    ValueError
+        For a material without Burgers vector, or without work of adhesion when
+        ``adhesion`` is True, or a value out of range (the message names it).
+
     Examples
     --------
     >>> c = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False)
     >>> round(c.alpha, 4), round(c.beta, 1)
     (0.0447, 155.0)
+    >>> print(c.describe().splitlines()[0])
+    contact: Au (E 78 GPa, nu 0.44) on a rigid flat
     """
 
     def __init__(self, material: Material | str, surface: Surface, *, h=None, friction=None,
                  adhesion: bool = True, heights: HeightDistribution = GAUSSIAN):
         self.material = as_material(material)
         if not isinstance(surface, Surface):
-            raise ValueError(f"surface must be an asperity.surface.Surface, got {surface!r}")
+            raise TypeError(f"surface must be an asperity.surface.Surface, got {type(surface).__name__}")
         self.surface = surface
         if self.material.b is None:
-            raise ValueError(f"material {self.material.name!r} has no Burgers vector b (m); "
-                             "give one, e.g. dataclasses.replace(material, b=2.9e-10)")
-        self.adhesion = bool(adhesion)
+            raise ValueError(f"material {self.material.name!r} has no Burgers vector b (m); give one, e.g. "
+                             "asperity.bodies.contact_material(material, b=2.9e-10) (command line: --b)")
+        self.adhesion = check_bool(adhesion, "adhesion")
         self.w = _adhesion_w(self.material, self.adhesion)
         self.h = self.material.b if h is None and self.material.h is None else \
             check_scalar_positive(self.material.h if h is None else h, "h", "m")
         self.friction = self._friction_law(friction)
+        if not isinstance(heights, HeightDistribution):
+            raise TypeError(f"heights must be an asperity.heights.HeightDistribution, got {type(heights).__name__}")
         self.heights = heights
 
     def _friction_law(self, friction) -> FrictionLaw | None:
@@ -258,6 +235,12 @@ class PhysicalContact:
         """Area unit N pi b^2 (m^2)."""
         return self.N * math.pi * self.b**2
 
+    @property
+    def regime(self) -> str:
+        """Single-asperity adhesion regime of :attr:`lam`: ``'DMT'``, ``'Maugis-Dugdale'``,
+        ``'JKR'`` (:func:`~asperity.regimes.adhesion_regime`), or ``'Hertz'`` without adhesion."""
+        return "Hertz" if self.gamma == 0.0 else adhesion_regime(self.lam)
+
     @functools.cached_property
     def model(self) -> Model:
         """The dimensionless :class:`~asperity.Model` with these alpha, beta, gamma, nu, h/b."""
@@ -265,14 +248,78 @@ class PhysicalContact:
         return Model(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b,
                      heights=self.heights, **kwargs)
 
+    def to_dict(self) -> dict:
+        r"""The contact computed, as plain data for strict JSON (SI units, names of the registry).
+
+        Keys: ``material``; ``body1`` and ``body2`` (``{'name', 'E_Pa', 'nu', 'rigid'}``;
+        ``body2`` is ``{'name': 'rigid flat', 'rigid': True, ...}`` for one body on a flat);
+        ``E_star_Pa``, ``G_star_Pa``, ``G_Pa``, ``nu`` (effective), ``b_m``, ``w_J_m2``,
+        ``h_m``; the surface ``sigma_s_m``, ``R_m``, ``eta_per_m2``, ``area_m2``,
+        ``surface_source``, ``N``; the groups ``alpha``, ``beta``, ``gamma``, ``lambda``,
+        ``h_over_b``, the adhesion ``regime``; ``friction`` (``{'law': 'Hurtado-Kim',
+        'tau_f1', 'tau_f2', 'a1', 'a2'}`` or ``{'law': 'constant shear', 'tau', 'tau_Pa'}``);
+        the units ``force_scale_N`` (:math:`NGb^2`) and ``area_scale_m2`` (:math:`N\pi b^2`).
+        """
+        s, body = self.surface, self.material.to_dict()
+        si = {name: PHYSICAL_PARAMETERS[name].si_name for name in PHYSICAL_PARAMETERS}
+        return {"material": self.material.name, "body1": body["body1"], "body2": body["body2"],
+                si["E_star"]: self.E_star, si["G_star"]: self.G_star, "G_Pa": self.G, "nu": self.nu,
+                si["b"]: self.b, si["w"]: self.w, si["h"]: self.h, si["sigma_s"]: s.sigma_s, si["R"]: s.R,
+                si["eta"]: s.eta, si["area"]: s.area, "surface_source": s.source, "N": self.N,
+                "alpha": self.alpha, "beta": self.beta, "gamma": self.gamma, "lambda": self.lam,
+                "h_over_b": self.h_over_b, "regime": self.regime, "friction": self._friction_dict(),
+                "force_scale_N": self.force_scale, "area_scale_m2": self.area_scale}
+
     def parameters(self) -> dict:
-        """Inputs, groups and scales (SI units) as a flat dict."""
-        s = self.surface
-        return {"material": self.material.name, "E_star_Pa": self.E_star, "G_Pa": self.G, "nu": self.nu,
-                "b_m": self.b, "w_J_m2": self.w, "h_m": self.h, "sigma_s_m": s.sigma_s, "R_m": s.R,
-                "eta_per_m2": s.eta, "area_m2": s.area, "N": self.N, "alpha": self.alpha, "beta": self.beta,
-                "gamma": self.gamma, "lambda": self.lam, "force_scale_N": self.force_scale,
-                "area_scale_m2": self.area_scale, "friction": repr(self.model.params.friction)}
+        """Inputs, groups and scales (SI units): :meth:`to_dict`."""
+        return self.to_dict()
+
+    def _friction_dict(self) -> dict:
+        law = HurtadoKim() if self.friction is None else self.friction
+        if isinstance(law, HurtadoKim):
+            return {"law": "Hurtado-Kim", "tau_f1": law.tau_f1, "tau_f2": law.tau_f2, "a1": law.a1, "a2": law.a2}
+        if isinstance(law, ConstantShear):
+            return {"law": "constant shear", "tau": law.tau, "tau_Pa": law.tau * self.G_star}
+        return {"law": repr(law)}
+
+    def describe(self) -> str:
+        """The contact computed, in five lines: bodies; moduli and adhesion; surface; groups; friction.
+
+        Command-line results print these lines at their top (as ``#`` comments).
+
+        Examples
+        --------
+        >>> c = PhysicalContact("Au/Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
+        >>> print(c.describe())  # doctest: +NORMALIZE_WHITESPACE
+        contact: Au (E 78 GPa, nu 0.44) on Au (E 78 GPa, nu 0.44)
+        E* = 48.36 GPa, G* = 27.08 GPa, w = 3.012 J/m^2, h = 288.5 pm, b = 288.5 pm
+        surface: sigma_s = 2 nm, R = 1 um, eta = 1e+12 1/m^2, A0 = 1e-06 m^2, N = 1e+06 summits
+        groups: alpha = 0.04472, beta = 155, gamma = 0.2159, lambda = 6.139 (JKR), h/b = 1
+        friction: Hurtado-Kim, tau_f1 = 0.02326, tau_f2 = 0.0007752, a1 = 28, a2 = 8e+04 (stresses in G*)
+        """
+        s, f = self.surface, self._friction_dict()
+        w = f"w = {format_si(self.w, 'J/m^2')}" if self.w > 0 else "w = 0 (no adhesion: Hertz)"
+        surface = (f"surface: sigma_s = {format_si(s.sigma_s, 'm')}, R = {format_si(s.R, 'm')}, "
+                   f"eta = {s.eta:.4g} 1/m^2, A0 = {s.area:.4g} m^2, N = {self.N:.4g} summits"
+                   + (f" [{s.source}]" if s.source else ""))
+        if f["law"] == "Hurtado-Kim":
+            constants = ", ".join(f"{k} = {f[k]:.4g}" for k in ("tau_f1", "tau_f2", "a1", "a2"))
+            friction = f"friction: Hurtado-Kim, {constants} (stresses in G*)"
+        elif f["law"] == "constant shear":
+            friction = (f"friction: constant shear strength tau = {format_si(f['tau_Pa'], 'Pa')} "
+                        f"(tau/G* = {f['tau']:.4g})")
+        else:
+            friction = f"friction: {f['law']}"
+        return "\n".join([
+            f"contact: {self.material.describe()}",
+            f"E* = {format_si(self.E_star, 'Pa')}, G* = {format_si(self.G_star, 'Pa')}, {w}, "
+            f"h = {format_si(self.h, 'm')}, b = {format_si(self.b, 'm')}",
+            surface,
+            f"groups: alpha = {self.alpha:.4g}, beta = {self.beta:.4g}, gamma = {self.gamma:.4g}, "
+            f"lambda = {self.lam:.4g} ({self.regime if self.gamma else 'no adhesion: Hertz'}), "
+            f"h/b = {self.h_over_b:.4g}",
+            friction,
+        ])
 
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:
@@ -282,7 +329,7 @@ class PhysicalContact:
         if np.any((d_bar < D_MIN) | (d_bar > D_MAX)):
             raise ValueError(f"d (separation) must lie in [{D_MIN * self.surface.sigma_s:g}, "
                              f"{D_MAX * self.surface.sigma_s:g}] m ({D_MIN:g} to {D_MAX:g} sigma_s)")
-        return self._physical(self.model.separation_curve(d_bar), d=d)
+        return self._physical(self.model.separation_curve(d_bar), d=d)  # warns: see _physical
 
     def load_curve(self, P) -> PhysicalCurve:
         """All quantities at the stable separation for each normal load ``P`` (N, or a pint force).
@@ -301,23 +348,31 @@ class PhysicalContact:
         return self._physical(curve, P=P)
 
     def pull_off(self, d_max: float | None = None) -> PhysicalPullOff:
-        """Pull-off force (N) and its separation (m).
+        """Pull-off force (N) and its separation (m), with the real contact area there.
 
         ``d_max`` bounds the search in units of sigma_s (default: see :meth:`asperity.Model.pull_off`).
+        Issues an :class:`AreaFractionWarning` if the area at pull-off passes 10 % of the nominal area.
         """
+        if d_max is not None:
+            d_max = check_scalar_positive(d_max, "d_max")
         po = self.model.pull_off(d_max)
+        area = float(self.model.separation_curve([po.d]).area[0]) * self.area_scale if po.exists else 0.0
+        warn_area_fraction(area / self.surface.area, stacklevel=2)
         return PhysicalPullOff(force=po.force * self.force_scale, d=po.d * self.surface.sigma_s,
-                               exists=po.exists, dimensionless=po)
+                               exists=po.exists, dimensionless=po, area=area, nominal_area=self.surface.area)
 
     def _physical(self, curve: CurveResult, *, d=None, P=None) -> PhysicalCurve:
+        """The SI curve of a dimensionless one; one :class:`AreaFractionWarning` if its area is too large."""
         fs, area = self.force_scale, curve.area * self.area_scale
         P = curve.P * fs if P is None else P
         with np.errstate(divide="ignore", invalid="ignore"):
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
-        return PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,
-                             mu=curve.mu, area=area, pressure=pressure, contacts=curve.contacts * self.N,
-                             dimensionless=curve, parameters=self.parameters(),
-                             nominal_area=self.surface.area)
+        result = PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,
+                               mu=curve.mu, area=area, pressure=pressure, contacts=curve.contacts * self.N,
+                               dimensionless=curve, parameters=self.parameters(),
+                               nominal_area=self.surface.area)
+        warn_area_fraction(result.max_area_fraction, stacklevel=3)  # -> the caller of load_curve/separation_curve
+        return result
 
 
 def _adhesion_w(body: Material, adhesion: bool) -> float:

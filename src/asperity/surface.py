@@ -23,6 +23,22 @@ gives the paper's roughness and friction-regime parameters (Eq 7),
 which :func:`surface_from_groups` inverts (Eq 20):
 :math:`\sigma_s = \alpha\beta b`, :math:`R = \beta b/\alpha`.
 
+**Summits versus all heights.**  :math:`\sigma_s` is the deviation of the *summit*
+heights, smaller than the rms roughness :math:`\sigma = \sqrt{m_0}` of all heights that
+profilometers and AFMs report.  For an isotropic Gaussian surface Nayak (1971), as
+summarised by McCool (1986), gives
+
+.. math::
+    \sigma_s = \Bigl(1 - \frac{0.8968}{\alpha_N}\Bigr)^{1/2}\sigma,\qquad
+    \alpha_N = \frac{m_0 m_4}{m_2^2} \ge 1,
+
+with :math:`m_0, m_2, m_4` the spectral moments (mean square height, slope, curvature of
+a profile) and :math:`\alpha_N` the bandwidth parameter
+(:func:`nayak_summit_sigma`, :meth:`Surface.from_rms`).  :math:`\sigma_s/\sigma` is 0.73
+at :math:`\alpha_N = 1.9`, 0.91 at 5, 0.95 at 10 and 0.995 at 100: for a broadband
+surface the two are close, for a narrow-band one they are not, and there is no default
+for :math:`\alpha_N`.  :func:`asperity.topography.analyse_surface` measures it from a scan.
+
 Every input accepts a float in SI units, a pint ``Quantity`` or a string with a unit
 such as ``'2nm'`` (``pip install 'asperity[units]'``).
 
@@ -32,17 +48,26 @@ References
    Proc. R. Soc. A 295 (1966) 300-319.
 .. [2] Adams, Müftü, Mohd Azhar, "A nano-scale multi-asperity contact and friction model",
    Eqs (7), (20).
+.. [3] P. R. Nayak, "Random process model of rough surfaces", J. Lubr. Technol. (ASME) 93
+   (1971) 398-407.
+.. [4] J. I. McCool, "Comparison of models for the contact of rough surfaces", Wear 107
+   (1986) 37-60.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-from ._validation import check_scalar_positive
+from ._validation import check_scalar_positive, check_text
 from .quantities import PHYSICAL_PARAMETERS
+from .units import format_si
 
-__all__ = ["Surface", "surface_from_groups"]
+__all__ = ["Surface", "surface_from_groups", "nayak_summit_sigma", "NAYAK_SIGMA_S"]
+
+#: Nayak's constant in the summit-height variance, :math:`\sigma_s^2 = (1 - 0.8968/\alpha_N)\,m_0`
+#: (Nayak 1971, as collected by McCool 1986).
+NAYAK_SIGMA_S = 0.8968
 
 #: The fields of a :class:`Surface`, with their entries in the quantity registry.
 SURFACE_PARAMETERS = {name: PHYSICAL_PARAMETERS[name] for name in ("sigma_s", "R", "eta", "area")}
@@ -62,6 +87,9 @@ class Surface:
         Summit density :math:`\eta` (1/m^2), > 0.
     area : float, pint.Quantity or str
         Nominal contact area :math:`A_0` (m^2), > 0.
+    source : str, optional
+        Where the numbers come from (e.g. ``'scan.x3p, spectral (Nayak/McCool)'``), for
+        descriptions; not compared.
 
     Attributes
     ----------
@@ -86,10 +114,52 @@ class Surface:
     R: float
     eta: float
     area: float
+    source: str | None = field(default=None, compare=False)
 
     def __post_init__(self):
         for name, q in SURFACE_PARAMETERS.items():
             object.__setattr__(self, name, check_scalar_positive(getattr(self, name), name, q.si_unit))
+        if self.source is not None:
+            check_text(self.source, "source")
+
+    @classmethod
+    def from_rms(cls, rms, R, eta, area, *, alpha_n) -> Surface:
+        r"""The surface of an rms roughness :math:`\sigma` and a bandwidth :math:`\alpha_N` (Nayak).
+
+        .. math:: \sigma_s = \Bigl(1 - \frac{0.8968}{\alpha_N}\Bigr)^{1/2}\sigma
+
+        Parameters
+        ----------
+        rms : float, pint.Quantity or str
+            Rms roughness :math:`\sigma = \sqrt{m_0}` of all heights (m), > 0.
+        R : float, pint.Quantity or str
+            Mean summit radius of curvature (m), > 0.
+        eta : float, pint.Quantity or str
+            Summit density (1/m^2), > 0.
+        area : float, pint.Quantity or str
+            Nominal contact area (m^2), > 0.
+        alpha_n : float
+            Nayak's bandwidth parameter :math:`\alpha_N = m_0m_4/m_2^2 \ge 1`; required
+            (no default: :math:`\sigma_s/\sigma` ranges from 0.32 at 1 to 1 at infinity).
+
+        Returns
+        -------
+        Surface
+            With :math:`\sigma_s` from :func:`nayak_summit_sigma`.
+
+        References
+        ----------
+        Nayak (1971); McCool (1986).
+
+        Examples
+        --------
+        >>> s = Surface.from_rms(5e-9, 1e-6, 1e12, 1e-6, alpha_n=10.0)
+        >>> round(s.sigma_s * 1e9, 4)
+        4.7705
+        """
+        rms, alpha_n = check_scalar_positive(rms, "rms", "m"), check_scalar_positive(alpha_n, "alpha_n", "")
+        return cls(sigma_s=nayak_summit_sigma(rms, alpha_n), R=R, eta=eta, area=area,
+                   source=f"rms {format_si(rms, 'm')} with alpha_N = {alpha_n:g} (Nayak)")
 
     @property
     def N(self) -> float:
@@ -139,3 +209,43 @@ def surface_from_groups(alpha, beta, b, eta, area) -> Surface:
     beta = check_scalar_positive(beta, "beta", "")
     b = check_scalar_positive(b, "b", "m")
     return Surface(sigma_s=alpha * beta * b, R=beta * b / alpha, eta=eta, area=area)
+
+
+def nayak_summit_sigma(rms, alpha_n) -> float:
+    r"""Summit-height deviation :math:`\sigma_s` of an isotropic Gaussian surface from its rms roughness.
+
+    .. math:: \sigma_s = \Bigl(1 - \frac{0.8968}{\alpha_N}\Bigr)^{1/2}\sigma
+
+    Parameters
+    ----------
+    rms : float, pint.Quantity or str
+        Rms roughness :math:`\sigma = \sqrt{m_0}` of all surface heights (m), > 0.
+    alpha_n : float
+        Nayak's bandwidth parameter :math:`\alpha_N = m_0 m_4/m_2^2`, >= 1 (its least value
+        for any surface); the relation is reliable for :math:`\alpha_N \gtrsim 5`.
+
+    Returns
+    -------
+    float
+        :math:`\sigma_s` (m).
+
+    Raises
+    ------
+    ValueError
+        For ``rms`` not > 0 or ``alpha_n`` not >= 1 (the message names the parameter).
+
+    References
+    ----------
+    Nayak (1971), J. Lubr. Technol. 93, 398-407; McCool (1986), Wear 107, 37-60 (Table 1).
+
+    Examples
+    --------
+    >>> round(nayak_summit_sigma(1.0, 100.0), 6)
+    0.995506
+    """
+    rms = check_scalar_positive(rms, "rms", "m")
+    alpha_n = check_scalar_positive(alpha_n, "alpha_n", "")
+    if alpha_n < 1.0:
+        raise ValueError(f"alpha_n (Nayak's bandwidth parameter m0 m4/m2^2) must be >= 1 "
+                         f"(valid range 1 <= alpha_n < inf), got {alpha_n!r}")
+    return math.sqrt(1.0 - NAYAK_SIGMA_S / alpha_n) * rms

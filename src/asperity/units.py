@@ -19,7 +19,7 @@ import functools
 
 import numpy as np
 
-__all__ = ["to_si", "parse_quantity", "is_quantity", "unit_registry"]
+__all__ = ["to_si", "parse_quantity", "is_quantity", "unit_registry", "format_si"]
 
 _INSTALL = "pip install 'asperity[units]'"
 
@@ -165,3 +165,45 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
         return parse_quantity(repr(float(quantity)), unit, name, require_unit=require_unit)
     value = _convert(quantity, unit, name)
     return float(value)
+
+
+#: SI prefixes by power of ten, for :func:`format_si`.
+_PREFIXES = {12: "T", 9: "G", 6: "M", 3: "k", 0: "", -3: "m", -6: "u", -9: "n", -12: "p", -15: "f"}
+
+
+def format_si(value, unit: str) -> str:
+    """``value`` (in the SI unit ``unit``) as text with an SI prefix and 4 significant digits.
+
+    Parameters
+    ----------
+    value : float
+        A real number in ``unit``.
+    unit : str
+        The unit's symbol, e.g. ``'Pa'``, ``'m'``, ``'J/m^2'`` (the prefix multiplies the whole unit).
+
+    Returns
+    -------
+    str
+        E.g. ``'78 GPa'``; zero, NaN and infinity without a prefix.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is not a real number or ``unit`` not a string.
+
+    Examples
+    --------
+    >>> format_si(7.8e10, "Pa"), format_si(2.885e-10, "m"), format_si(0.05, "J/m^2")
+    ('78 GPa', '288.5 pm', '50 mJ/m^2')
+    """
+    import math
+
+    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
+        raise TypeError(f"value must be a real number, got {type(value).__name__} {value!r}")
+    if not isinstance(unit, str):
+        raise TypeError(f"unit must be a string, got {type(unit).__name__} {unit!r}")
+    value = float(value)
+    if value == 0 or not math.isfinite(value):
+        return f"{value:g} {unit}"
+    exponent = min(max(3 * math.floor(math.log10(abs(value)) / 3), -15), 12)
+    return f"{value / 10.0**exponent:.4g} {_PREFIXES[exponent]}{unit}"

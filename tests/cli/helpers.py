@@ -8,6 +8,8 @@ from asperity.cli import main
 
 MODEL = ["--alpha", "0.01", "--beta", "1000", "--gamma", "1e-3"]
 AU = ["--material", "Au", "--sigma", "2nm", "--radius", "1um", "--density", "1e12/m^2", "--area", "1mm^2"]
+#: The same contact with the library's names (the old spellings above stay as aliases).
+AU_NEW = ["--material", "Au", "--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2", "--area", "1mm^2"]
 
 
 def run(capsys, *argv):
@@ -18,7 +20,14 @@ def run(capsys, *argv):
 
 
 def rows_of(text):
-    return list(csv.DictReader(io.StringIO(text)))
+    """The CSV rows of a command's output; the '#' lines describing a physical contact are skipped."""
+    return list(csv.DictReader(io.StringIO("".join(line for line in text.splitlines(keepends=True)
+                                                   if not line.startswith("#")))))
+
+
+def comment_lines(text):
+    """The '#' lines at the top of a physical result, without the '# '."""
+    return [line[2:] for line in text.splitlines() if line.startswith("# ")]
 
 
 def _reject_constant(name):

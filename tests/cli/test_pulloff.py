@@ -26,8 +26,11 @@ def test_physical_pulloff(capsys):
 
     code, out, _ = run(capsys, "pulloff", *AU, "--format", "json")
     got = json.loads(out)
-    ref = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6)).pull_off()
-    assert set(got) == {"pull_off_N", "d_m"} and got["pull_off_N"] == pytest.approx(ref.force, rel=1e-14)
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
+    ref = contact.pull_off()
+    assert set(got) == {"contact", "rows"} and len(got["rows"]) == 1
+    assert got["rows"][0] == ref.to_dict() and got["contact"] == contact.to_dict()
+    assert got["rows"][0]["pull_off_N"] == pytest.approx(ref.force, rel=1e-14)
 
 
 def test_pulloff_without_adhesion_has_null_separation(capsys):

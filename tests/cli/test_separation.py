@@ -33,5 +33,6 @@ def test_physical_separation(capsys):
                        "--format", "json")
     assert code == 0
     got = json.loads(out)
-    np.testing.assert_allclose([r["P_N"] for r in got], contact.separation_curve([-2e-9, 0, 3e-9]).P,
+    assert set(got) == {"contact", "rows"} and got["contact"] == json.loads(json.dumps(contact.to_dict()))
+    np.testing.assert_allclose([r["P_N"] for r in got["rows"]], contact.separation_curve([-2e-9, 0, 3e-9]).P,
                                rtol=1e-14)

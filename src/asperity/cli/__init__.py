@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+import warnings
 
 from .._optional import MissingDependency
 from .._version import __version__
@@ -53,8 +54,27 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _notes(caught) -> None:
+    """The warnings a command raised: asperity's own as one ``asperity: note:`` line each (once
+    per message), any other re-issued as it came (so tests, which turn warnings into errors, see it)."""
+    seen = set()
+    for w in caught:
+        if w.category.__module__.split(".")[0] == "asperity":
+            message = " ".join(str(w.message).split())
+            if message not in seen:
+                seen.add(message)
+                print(f"asperity: note: {message}", file=sys.stderr)
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
+
+
 def main(argv=None) -> int:
-    """Run the command line on ``argv`` (default ``sys.argv[1:]``); return the exit status."""
+    """Run the command line on ``argv`` (default ``sys.argv[1:]``); return the exit status.
+
+    Errors print one line ``asperity: error: ...`` and return 2.  asperity's warnings (e.g.
+    :class:`asperity.AreaFractionWarning`) print one ``asperity: note: ...`` line each after
+    a successful command, and none after an error.
+    """
     parser = build_parser()
     argv = sys.argv[1:] if argv is None else argv
     try:
@@ -62,12 +82,15 @@ def main(argv=None) -> int:
         if args.command is None:
             parser.print_help()
             return 2
-        COMMANDS[args.command].run(args)
-    except (UsageError, ValueError, MissingDependency) as exc:  # ValueError: the library's own checks
-        print(f"asperity: error: {exc}", file=sys.stderr)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            COMMANDS[args.command].run(args)
+    except (UsageError, ValueError, TypeError, MissingDependency) as exc:  # the library's own checks
+        print(f"asperity: error: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("asperity: interrupted", file=sys.stderr)
         return 130
+    _notes(caught)
     return 0
 

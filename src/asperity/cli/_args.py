@@ -1,15 +1,19 @@
-"""Command-line arguments shared by the commands: lists, quantities, argument groups.
+"""Command-line arguments shared by the commands: argument groups and what they build.
 
-* :func:`parse_list`: ``a,b,c`` or ``start:stop:count`` -> a float array; malformed
-  lists (an empty item, a wrong number of ``:`` fields, a count that is not a positive
-  integer, a non-finite value) are errors, never repaired, and no list may hold more than
-  :data:`MAX_POINTS` points (checked before anything is allocated).
-* :func:`quantity` and :func:`quantity_list`: the same with units (``2nm``, ``1mN:1N:50``).
-* The shared argument groups: :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b),
-  :func:`add_contact_arguments` (a physical contact: material and surface),
-  :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``), with help texts from
-  :mod:`asperity.quantities`; and what builds the model from them:
-  :func:`is_physical`, :func:`model_from_args`, :func:`contact_from_args`.
+* The shared argument groups, with help texts from :mod:`asperity.quantities`:
+  :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b), :func:`add_contact_arguments`
+  (a physical contact: the bodies, the rough surface, the friction law) and
+  :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``).
+* What builds the library's objects from them: :func:`is_physical`,
+  :func:`model_from_args`, :func:`contact_from_args` (with :func:`surface_from_args`,
+  :func:`friction_from_args`).  The library checks every value (its ValueError names the
+  parameter, which is the option's name without dashes); only the combination of
+  options is checked here.
+* Lists and quantities (``a,b,c``, ``start:stop:count``, ``2nm``) come from
+  :mod:`~asperity.cli._lists` and are re-exported.
+
+Every command that calls :func:`add_contact_arguments` gets every physical option and
+:func:`contact_from_args` reads them all, so a new physical command needs nothing else.
 
 Nothing here imports NumPy, SciPy or the model at module level: the parser is built
 (and ``--help`` answered) before any of them is loaded.
@@ -21,6 +25,16 @@ import argparse
 import os
 
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
+from ._lists import (
+    MAX_POINTS,
+    UsageError,
+    join_negative_lists,
+    optional_quantity,
+    parse_list,
+    quantity,
+    quantity_items,
+    quantity_list,
+)
 
 __all__ = [
     "MAX_POINTS",
@@ -38,171 +52,41 @@ __all__ = [
     "is_physical",
     "model_from_args",
     "contact_from_args",
+    "surface_from_args",
+    "friction_from_args",
     "title",
     "UNITS",
     "MODEL_HELP",
+    "MATERIAL_FORMS",
+    "CONTACT_OPTIONS",
 ]
-
-#: Largest number of points a list or a ``start:stop:count`` range may hold.
-MAX_POINTS = 10**6
 
 #: Output columns and units, for the epilog of ``--help`` (from :data:`asperity.quantities.CURVE_COLUMNS`).
 UNITS = ("\n".join(f"  {name:9s} {q.meaning}" for name, q in CURVE_COLUMNS.items())
-         + "\nWith --material (SI):\n"
-         + "\n".join(f"  {q.si_name:11s} [{q.si_unit}] {q.si_meaning}" for q in CURVE_COLUMNS.values()))
+         + "\nWith a physical contact (SI):\n"
+         + "\n".join(f"  {q.si_name:11s} [{q.si_unit}] {q.si_meaning}" for q in CURVE_COLUMNS.values())
+         + "\nA physical result starts with '#' lines stating the contact computed (both bodies, E*, G*, "
+           "w, h, b,\nthe surface, alpha, beta, gamma, lambda and the adhesion regime, N, the friction law); "
+           "read the CSV\nwith pandas.read_csv(path, comment='#'), or drop them with --no-comments. "
+           "JSON: one object\n{\"contact\": {...}, \"rows\": [...]}.")
 
 #: ``--help`` text of each model parameter (from :data:`asperity.quantities.MODEL_PARAMETERS`).
 MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", "gamma", "nu", "h_over_b")}
 
-#: The physical-contact options, in the order they are listed in messages.
-CONTACT_OPTIONS = ("material", "sigma", "radius", "density", "area")
+#: How ``--material`` names a contact (the description of the bodies' group in ``--help``).
+MATERIAL_FORMS = ("--material Au is ONE gold body on a rigid flat (the paper's set-up); --material Au/Au is TWO "
+                  "gold bodies (E* and G* halve: the forces differ, by about 1.6x for the same surface and "
+                  "load); --material A/B pairs any two table names, as does --material A --material2 B. "
+                  "Without --material, --E and --nu describe a body of your own. --E/--nu (first body), "
+                  "--E2/--nu2 (second body), --b, --w, --h or --sigma0 replace the table's values; "
+                  "'asperity materials' lists the table.")
 
-
-class UsageError(Exception):
-    """A problem with the command line or its values: one line, exit status 2."""
-
-
-def _show(text: str, limit: int = 60) -> str:
-    """``repr`` of a user's text, shortened (a list may hold a million items)."""
-    return repr(text) if len(text) <= limit else repr(text[:limit]) + "..."
-
-
-def _too_many(name: str, count: int) -> UsageError:
-    return UsageError(f"{name}: {count} points is more than the limit of {MAX_POINTS} (MAX_POINTS)")
-
-
-def _items(text: str, name: str) -> list[str]:
-    """The comma-separated items of ``text``; an empty item or too many items is an error."""
-    if text.count(",") + 1 > MAX_POINTS:
-        raise _too_many(name, text.count(",") + 1)
-    items = text.split(",")
-    if any(not item.strip() for item in items):
-        raise UsageError(f"{name}: empty item in {_show(text)}; give numbers separated by single commas "
-                         "'a,b,c' or a range 'start:stop:count'")
-    return items
-
-
-def _range_parts(text: str, name: str) -> tuple[str, str, int]:
-    """``start``, ``stop`` (texts) and ``count`` of ``start:stop:count``, count checked."""
-    parts = text.split(":")
-    if len(parts) != 3:
-        raise UsageError(f"{name}: expected a range 'start:stop:count' (three fields), got {_show(text)}")
-    try:
-        count = int(parts[2])
-    except ValueError:
-        count = None
-    if count is None or count < 1:
-        raise UsageError(f"{name}: count in start:stop:count must be a positive integer, got {parts[2]!r}")
-    if count > MAX_POINTS:
-        raise _too_many(name, count)
-    return parts[0], parts[1], count
-
-
-def _spaced(start: float, stop: float, count: int, *, log: bool, name: str, text: str):
-    """``count`` points from ``start`` to ``stop``, log-spaced if ``log``, else linear."""
-    import math
-
-    import numpy as np
-
-    if not (math.isfinite(start) and math.isfinite(stop)):
-        raise UsageError(f"{name}: values must be finite, got {_show(text)}")
-    if log:
-        if start <= 0 or stop <= 0:
-            raise UsageError(f"{name}: a log-spaced range start:stop:count needs start, "
-                             f"stop > 0 (use a comma list for zero or negative loads)")
-        return np.geomspace(start, stop, count)
-    with np.errstate(over="ignore", invalid="ignore"):
-        values = np.linspace(start, stop, count)
-        if not np.all(np.isfinite(values)):  # stop - start beyond the float range: weigh the ends
-            t = np.linspace(0.0, 1.0, count)
-            values = start * (1.0 - t) + stop * t
-    return values
-
-
-def parse_list(text: str, *, log: bool, name: str):
-    """``a,b,c`` or ``start:stop:count`` (log-spaced if ``log``, else linear) as a float array.
-
-    Parameters
-    ----------
-    text : str
-        Finite numbers separated by single commas, or ``start:stop:count`` with a
-        positive integer count.  At most :data:`MAX_POINTS` points.
-    log : bool
-        Space a range logarithmically (start and stop must then be > 0).
-    name : str
-        The option, for messages (``'--P'``).
-
-    Returns
-    -------
-    numpy.ndarray
-        1-D float array.
-
-    Raises
-    ------
-    UsageError
-        For an empty item (``0,,1``, ``1,``), a range without exactly three fields, a count
-        that is not a positive integer, a non-finite value, or more than
-        :data:`MAX_POINTS` points.
-    """
-    import numpy as np
-
-    bad = UsageError(f"{name}: expected numbers 'a,b,c' or 'start:stop:count', got {_show(text)}")
-    if ":" in text:
-        start, stop, count = _range_parts(text, name)
-        try:
-            lo, hi = float(start), float(stop)
-        except ValueError:
-            raise bad from None
-        return _spaced(lo, hi, count, log=log, name=name, text=text)
-    items = _items(text, name)
-    try:
-        values = np.array([float(v) for v in items])
-    except ValueError:
-        raise bad from None
-    if not np.all(np.isfinite(values)):
-        raise UsageError(f"{name}: values must be finite, got {_show(text)}")
-    return values
-
-
-def quantity(text: str, unit: str, name: str) -> float:
-    """One quantity with a unit (``'2nm'``) in the SI unit ``unit`` (needs pint)."""
-    from .._optional import require
-
-    require("pint", purpose="quantities with units", extra="units")
-    from ..units import parse_quantity
-
-    return parse_quantity(text, unit, name)
-
-
-def quantity_items(text: str, unit: str, name: str) -> list[float]:
-    """A comma list of quantities (``'10um,5um'``) in ``unit``; empty items are errors."""
-    return [quantity(x, unit, name) for x in _items(text, name)]
-
-
-def quantity_list(text: str, unit: str, *, log: bool, name: str):
-    """``a,b,c`` or ``start:stop:count`` of quantities with units (``1mN:1N:50``), in ``unit``.
-
-    The same rules as :func:`parse_list`.
-    """
-    import numpy as np
-
-    if ":" in text:
-        start, stop, count = _range_parts(text, name)
-        lo, hi = quantity(start, unit, name), quantity(stop, unit, name)
-        return _spaced(lo, hi, count, log=log, name=name, text=text)
-    return np.array(quantity_items(text, unit, name), dtype=float)
-
-
-def join_negative_lists(argv):
-    """``--d -1,0,2`` -> ``--d=-1,0,2``: argparse would take ``-1,0,2`` for an option."""
-    out = list(argv)
-    i = 0
-    while i < len(out) - 1:
-        nxt = out[i + 1]
-        if out[i].startswith("--") and "=" not in out[i] and nxt[:1] == "-" and nxt[1:2] in tuple("0123456789."):
-            out[i:i + 2] = [f"{out[i]}={nxt}"]
-        i += 1
-    return out
+#: Options of the bodies, the surface and the friction law: ``dest`` names (None when not given).
+BODY_OPTIONS = ("material", "E", "material2", "E2", "nu2", "b", "w", "h", "sigma0")
+SURFACE_OPTIONS = ("sigma_s", "rms", "alpha_n", "R", "eta", "area", "surface", "size", "unit", "method")
+FRICTION_OPTIONS = ("tau", "tau_f1", "tau_f2", "a1", "a2")
+#: Every option that makes a command physical (``--nu`` and the Hurtado-Kim constants serve both forms).
+CONTACT_OPTIONS = (*BODY_OPTIONS, *SURFACE_OPTIONS, "tau")
 
 
 # -- paths ---------------------------------------------------------------------------------
@@ -229,26 +113,88 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--alpha", type=float, help=MODEL_HELP["alpha"])
     g.add_argument("--beta", type=float, help=MODEL_HELP["beta"])
     g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
-    g.add_argument("--nu", type=float, default=None, help=MODEL_HELP["nu"])
-    g.add_argument("--h-over-b", dest="h_over_b", type=float, default=1.0, help=MODEL_HELP["h_over_b"])
+    g.add_argument("--nu", type=float, default=None, help=_NU_HELP)
+    g.add_argument("--h-over-b", dest="h_over_b", type=float, default=None, help=MODEL_HELP["h_over_b"])
 
 
-def _meaning(name: str) -> str:
-    return PHYSICAL_PARAMETERS[name].meaning
+_NU_HELP = (f"{MODEL_HELP['nu']}; with a physical contact: Poisson's ratio of the (first) body, replacing "
+            "the table's")
+
+
+def _help(name: str, extra: str = "", symbol: str | None = None) -> str:
+    """``--help`` text of a physical quantity from the registry, with its SI unit."""
+    q = PHYSICAL_PARAMETERS[name]
+    return f"{q.meaning} {symbol or name} [{q.si_unit}]{extra}"
+
+
+def _paragraph(text: str) -> str:
+    """A group description wrapped for ``--help`` (commands with an epilog print descriptions raw)."""
+    import textwrap
+
+    return textwrap.fill(text, 78)
 
 
 def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
-    """A physical contact: ``--material --sigma --radius --density --area --no-adhesion``."""
-    ph = parser.add_argument_group(
-        "physical contact (SI results; quantities with units, e.g. 2nm, 1um, 1e12/m^2, 1mm^2)")
-    ph.add_argument("--material", help="material name from the table (asperity materials lists them), "
-                                       "e.g. Au, Si, Au/Au")
-    ph.add_argument("--sigma", help=f"{_meaning('sigma_s')} sigma_s, a length (e.g. 2nm)")
-    ph.add_argument("--radius", help=f"{_meaning('R')} R, a length (e.g. 1um)")
-    ph.add_argument("--density", help=f"{_meaning('eta')} eta, e.g. 1e12/m^2")
-    ph.add_argument("--area", help=f"{_meaning('area')}, an area (e.g. 1mm^2)")
-    ph.add_argument("--no-adhesion", action="store_true",
-                    help="ignore the material's work of adhesion (Hertz contacts, gamma = 0)")
+    """A physical contact: the bodies, the rough surface and the friction law (see :data:`MATERIAL_FORMS`).
+
+    Bodies: ``--material --E --nu --material2 --E2 --nu2 --b --w --h --sigma0 --no-adhesion``;
+    surface: ``--sigma-s`` (alias ``--sigma``) or ``--rms`` with ``--bandwidth``, ``--R``
+    (``--radius``), ``--eta`` (``--density``), ``--area``, or ``--surface FILE`` with
+    ``--size --unit --method``; friction: ``--tau`` or ``--tau-f1 --tau-f2 --a1 --a2``;
+    ``--no-comments``.  ``--nu`` is the model group's option where that group exists.
+    """
+    b = parser.add_argument_group("physical contact: the bodies (quantities with units, e.g. 70GPa, 0.25nm, "
+                                  "0.1J/m^2)", _paragraph(MATERIAL_FORMS))
+    b.add_argument("--material", metavar="NAME",
+                   help="table name: 'Au' (on a rigid flat), 'Au/Au' (two bodies), 'A/B'")
+    b.add_argument("--E", metavar="STRESS", help=_help("E", " of the (first) body, e.g. 70GPa"))
+    try:
+        b.add_argument("--nu", type=float, default=None, help=_NU_HELP)
+    except argparse.ArgumentError:  # already there: the model group's --nu serves both
+        pass
+    b.add_argument("--material2", metavar="NAME", help="second elastic body from the table, instead of the "
+                                                       "rigid flat (one body, e.g. Si)")
+    b.add_argument("--E2", metavar="STRESS", help="Young's modulus E2 [Pa] of the second body (with --nu2: a body of "
+                                                  "your own; with --material2: replaces the table's)")
+    b.add_argument("--nu2", type=float, help="Poisson's ratio nu2 of the second body, -1 < nu2 < 0.5")
+    b.add_argument("--b", metavar="LENGTH", help=_help("b", ", e.g. 0.25nm"))
+    b.add_argument("--w", metavar="ENERGY", help=_help("w", " of the interface, e.g. 0.1J/m^2 or 50mJ/m^2 "
+                                                            "(the table's are clean surfaces in vacuum)"))
+    b.add_argument("--h", metavar="LENGTH", help=_help("h", "; default b (the paper)"))
+    b.add_argument("--sigma0", metavar="STRESS", help=_help("sigma0", ", instead of --h (h = w/sigma0)"))
+    b.add_argument("--no-adhesion", action="store_true",
+                   help="ignore the work of adhesion (Hertz contacts, gamma = 0)")
+    s = parser.add_argument_group(
+        "physical contact: the rough surface (Greenwood-Williamson summits)", _paragraph(
+        "Either --sigma-s (or --rms with --bandwidth), --R and --eta, or --surface FILE; always --area. "
+        "sigma_s is the deviation of the SUMMIT heights, below the rms roughness sigma of all heights: "
+        "sigma_s = (1 - 0.8968/alpha_N)^(1/2) sigma (Nayak 1971, McCool 1986), alpha_N = m0 m4/m2^2 the "
+        "bandwidth parameter (sigma_s/sigma = 0.91 at alpha_N = 5, 0.95 at 10, 0.995 at 100; "
+        "'asperity surface' measures it)."))
+    s.add_argument("--sigma-s", "--sigma", dest="sigma_s", metavar="LENGTH", help=_help("sigma_s", ", e.g. 2nm"))
+    s.add_argument("--rms", metavar="LENGTH", help=_help("rms", ", converted to sigma_s with --bandwidth",
+                                                         symbol="sigma"))
+    s.add_argument("--bandwidth", "--alpha-n", dest="alpha_n", type=float, metavar="ALPHA_N",
+                   help=f"{PHYSICAL_PARAMETERS['alpha_n'].help()}; needed with --rms")
+    s.add_argument("--R", "--radius", dest="R", metavar="LENGTH", help=_help("R", ", e.g. 1um"))
+    s.add_argument("--eta", "--density", dest="eta", metavar="DENSITY", help=_help("eta", ", e.g. 1e12/m^2 "
+                                                                                           "or 1/um^2"))
+    s.add_argument("--area", metavar="AREA", help=_help("area", ", e.g. 1mm^2", symbol="A0"))
+    s.add_argument("--surface", metavar="FILE", help="a measured scan (AFM map or profile, any format "
+                   "SurfaceTopography reads): its summits give sigma_s, R, eta (needs asperity[topography])")
+    s.add_argument("--size", help="with --surface: scan size when the file stores none, Lx,Ly or L with units "
+                                  "(e.g. 10um,10um)")
+    s.add_argument("--unit", help="with --surface: unit of the stored heights when the file stores none "
+                                  "(m, mm, um, nm, Å, pm)")
+    s.add_argument("--method", choices=("spectral", "detected"), default=None,
+                   help="with --surface: summits from the spectral moments (Nayak/McCool, default) or detected")
+    f = parser.add_argument_group("friction law (default: Hurtado-Kim with the paper's constants)")
+    f.add_argument("--tau", metavar="STRESS", help=_help("tau", ", constant (e.g. 50MPa), instead of "
+                                                                "Hurtado-Kim; physical contacts only"))
+    for name in ("tau_f1", "tau_f2", "a1", "a2"):
+        f.add_argument(f"--{name.replace('_', '-')}", dest=name, type=float, help=MODEL_PARAMETERS[name].help())
+    parser.add_argument("--no-comments", action="store_true",
+                        help="physical results: leave out the '#' lines describing the contact (table, CSV)")
 
 
 def add_output_arguments(parser: argparse.ArgumentParser, plot: bool = True) -> None:
@@ -264,52 +210,139 @@ def add_output_arguments(parser: argparse.ArgumentParser, plot: bool = True) -> 
 
 
 # -- from arguments to the model ---------------------------------------------------------------
+def _given(args, names) -> list[str]:
+    """The options among ``names`` (dest names) that were given, as ``--flags``."""
+    return [f"--{n.replace('_', '-')}" for n in names if getattr(args, n, None) not in (None, False)]
+
+
 def is_physical(args) -> bool:
-    """True for a physical contact (``--material`` ...), False for ``--alpha``/``--beta``.
+    """True for a physical contact (``--material``, ``--E``, ``--sigma-s``, ...), False for ``--alpha``/``--beta``.
 
     Raises
     ------
     UsageError
-        For a mixture of the two, an incomplete physical contact or a missing alpha/beta.
+        For a mixture of the two, or a missing alpha/beta.
     """
-    physical = [getattr(args, name) for name in CONTACT_OPTIONS]
-    if any(v is not None for v in physical):
-        if args.alpha is not None or args.beta is not None or args.gamma is not None:
-            raise UsageError("give either --alpha/--beta/--gamma or a physical contact "
-                             "(--material, --sigma, --radius, --density, --area), not both")
-        missing = [f"--{n}" for n, v in zip(CONTACT_OPTIONS, physical, strict=True) if v is None]
-        if missing:
-            raise UsageError(f"a physical contact also needs {', '.join(missing)}")
-        if args.nu is not None:
-            raise UsageError("--nu comes from the material with --material")
+    physical = _given(args, (*CONTACT_OPTIONS, "no_adhesion"))
+    if physical:
+        dimensionless = _given(args, ("alpha", "beta", "gamma", "h_over_b"))
+        if dimensionless:
+            raise UsageError(f"give either the dimensionless model ({', '.join(dimensionless)}) or a physical "
+                             f"contact ({', '.join(physical)}), not both")
         return True
-    if args.alpha is None or args.beta is None:
-        raise UsageError("the model needs --alpha and --beta (or --material with --sigma, --radius, "
-                         "--density and --area)")
+    if getattr(args, "alpha", None) is None or getattr(args, "beta", None) is None:
+        raise UsageError("the model needs --alpha and --beta (or a physical contact: --material with --sigma-s, "
+                         "--R, --eta and --area)")
     return False
 
 
 def model_from_args(args):
-    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b``."""
+    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b`` and the friction constants."""
     from ..curves import Model
 
     nu = 0.3 if args.nu is None else args.nu
-    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b)
+    h_over_b = 1.0 if args.h_over_b is None else args.h_over_b
+    friction = friction_from_args(args, physical=False)
+    kwargs = {} if friction is None else {"friction": friction}
+    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=h_over_b, **kwargs)
+
+
+def friction_from_args(args, *, physical: bool):
+    """``--tau`` (Pa, physical only), a :class:`~asperity.HurtadoKim` of the constants given, or None."""
+    constants = {n: getattr(args, n) for n in ("tau_f1", "tau_f2", "a1", "a2") if getattr(args, n, None) is not None}
+    tau = getattr(args, "tau", None)
+    if tau is not None:
+        if constants:
+            raise UsageError("give --tau (a constant shear strength) or the Hurtado-Kim constants "
+                             f"({', '.join(_given(args, constants))}), not both")
+        if not physical:
+            raise UsageError("--tau is a stress in Pa: it needs a physical contact (--material ...)")
+        return quantity(tau, "Pa", "--tau")
+    if constants:
+        from ..friction_stress import HurtadoKim
+
+        return HurtadoKim(**constants)
+    return None
+
+
+def _check_surface_options(args) -> None:
+    """One way to give the surface, and --area (the combination only; the library checks values)."""
+    if args.surface is not None:
+        clash = _given(args, ("sigma_s", "rms", "alpha_n", "R", "eta"))
+        if clash:
+            raise UsageError(f"--surface gives sigma_s, R and eta: not with {', '.join(clash)}")
+    else:
+        stray = _given(args, ("size", "unit", "method"))
+        if stray:
+            raise UsageError(f"{', '.join(stray)} only apply with --surface FILE")
+        if args.sigma_s is not None and args.rms is not None:
+            raise UsageError("give --sigma-s (summit heights) or --rms (all heights, with --bandwidth), not both")
+        if args.rms is not None and args.alpha_n is None:
+            raise UsageError("--rms needs --bandwidth ALPHA_N (Nayak's m0 m4/m2^2; 'asperity surface' measures "
+                             "it) to give sigma_s = (1 - 0.8968/alpha_N)^(1/2) rms; or give --sigma-s")
+        if args.alpha_n is not None and args.rms is None:
+            raise UsageError("--bandwidth only applies with --rms")
+        missing = [flag for flag, v in (("--sigma-s (or --rms)", args.sigma_s or args.rms), ("--R", args.R),
+                                        ("--eta", args.eta)) if v is None]
+        if missing:
+            raise UsageError(f"a physical contact needs the surface: {', '.join(missing)} (or --surface FILE)")
+    if args.area is None:
+        raise UsageError("a physical contact needs --area (the nominal contact area, e.g. 1mm^2)")
+
+
+def surface_from_args(args):
+    """The :class:`asperity.surface.Surface` of the surface options (a scan's through the library)."""
+    from ..surface import Surface
+
+    _check_surface_options(args)
+    area = quantity(args.area, "m^2", "--area")
+    if args.surface is not None:
+        import warnings
+
+        from .._optional import require
+
+        require("SurfaceTopography", purpose="--surface", extra="topography")
+        from ..topography import analyse_surface
+
+        kwargs = {} if args.size is None else {"physical_sizes": tuple(quantity_items(args.size, "m", "--size"))}
+        if args.unit is not None:
+            kwargs["unit"] = args.unit
+        analysis = analyse_surface(args.surface, **kwargs)
+        for message in analysis.warnings:  # printed as notes once the command succeeds
+            warnings.warn(f"surface {args.surface}: {message}", SurfaceNote, stacklevel=1)
+        return analysis.surface(area, method=args.method or "spectral")
+    R, eta = quantity(args.R, "m", "--R"), quantity(args.eta, "1/m^2", "--eta")
+    if args.rms is not None:
+        return Surface.from_rms(quantity(args.rms, "m", "--rms"), R, eta, area, alpha_n=args.alpha_n)
+    return Surface(quantity(args.sigma_s, "m", "--sigma-s"), R, eta, area)
+
+
+class SurfaceNote(UserWarning):
+    """A scan's reason for doubt (:attr:`asperity.topography.SurfaceAnalysis.warnings`), shown as a note."""
 
 
 def contact_from_args(args):
-    """The :class:`asperity.physical.PhysicalContact` of the physical-contact group."""
-    from ..physical import PhysicalContact, Surface
+    """The :class:`asperity.physical.PhysicalContact` of the physical-contact options.
 
-    surface = Surface(quantity(args.sigma, "m", "--sigma"), quantity(args.radius, "m", "--radius"),
-                      quantity(args.density, "1/m^2", "--density"), quantity(args.area, "m^2", "--area"))
-    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion)
+    The bodies go through :func:`asperity.bodies.contact_material`, the surface through
+    :func:`surface_from_args`, the friction law through :func:`friction_from_args`; the
+    library checks every value.
+    """
+    from ..bodies import contact_material
+    from ..physical import PhysicalContact
+
+    body = contact_material(args.material, E=optional_quantity(args.E, "Pa", "--E"), nu=getattr(args, "nu", None),
+                            material2=args.material2, E2=optional_quantity(args.E2, "Pa", "--E2"), nu2=args.nu2,
+                            b=optional_quantity(args.b, "m", "--b"), w=optional_quantity(args.w, "J/m^2", "--w"),
+                            h=optional_quantity(args.h, "m", "--h"),
+                            sigma0=optional_quantity(args.sigma0, "Pa", "--sigma0"))
+    return PhysicalContact(body, surface_from_args(args), friction=friction_from_args(args, physical=True),
+                           adhesion=not args.no_adhesion)
 
 
-def title(args) -> str:
-    """One line naming the contact or the model parameters (plot titles)."""
-    if args.material:
-        return (f"{args.material}: sigma_s={args.sigma}, R={args.radius}, eta={args.density}, "
-                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}")
+def title(args, contact=None) -> str:
+    """One line naming the contact (its first description line) or the model parameters (plot titles)."""
+    if contact is not None:
+        return contact.describe().splitlines()[0].removeprefix("contact: ")
     return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma or 0:g}, "
-            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}")
+            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={1.0 if args.h_over_b is None else args.h_over_b:g}")

@@ -7,10 +7,8 @@ physical contact), asks the library for the curve, and writes it (and ``--plot``
 
 from __future__ import annotations
 
-import sys
-
 from ._args import UsageError, contact_from_args, is_physical, model_from_args, parse_list, quantity_list, title
-from ._output import curve_rows, format_rows, output_format, write_outputs
+from ._output import curve_rows, format_physical, format_rows, output_format, write_outputs
 
 __all__ = ["run_curve"]
 
@@ -22,7 +20,12 @@ KINDS = {
 
 
 def run_curve(args, kind: str) -> None:
-    """Compute the ``kind`` curve (``'load'`` or ``'separation'``) of ``args`` and write it."""
+    """Compute the ``kind`` curve (``'load'`` or ``'separation'``) of ``args`` and write it.
+
+    A physical result starts with the contact computed; a real contact area above 10 % of
+    the nominal area is the library's :class:`~asperity.AreaFractionWarning`, which the
+    command line prints as one note.
+    """
     dimless_opt, phys_opt, unit, log = KINDS[kind]
     physical = is_physical(args)
     names = (f"--{dimless_opt}", f"--{phys_opt}")
@@ -30,11 +33,13 @@ def run_curve(args, kind: str) -> None:
     text = phys if physical else dimless
     if text is None or (phys if not physical else dimless) is not None:
         want, other = (names[1], names[0]) if physical else names
-        raise UsageError(f"give {want} LIST" + (f" (not {other}) with --material" if physical
-                                               else f" (or --material ... with {names[1]})"))
+        raise UsageError(f"give {want} LIST" + (f" (not {other}) with a physical contact" if physical
+                                               else f" (or a physical contact, --material ..., with {names[1]})"))
+    contact = None
     if physical:
         values = quantity_list(text, unit, log=log, name=names[1])
-        curve = getattr(contact_from_args(args), f"{kind}_curve")(values)
+        contact = contact_from_args(args)
+        curve = getattr(contact, f"{kind}_curve")(values)
     else:
         values = parse_list(text, log=log, name=names[0])
         curve = getattr(model_from_args(args), f"{kind}_curve")(values)
@@ -42,15 +47,10 @@ def run_curve(args, kind: str) -> None:
     def plot(path, fmt):
         from ._plot import plot_curve
 
-        plot_curve(curve, path, fmt, x="d" if kind == "separation" else "P", title=title(args),
+        plot_curve(curve, path, fmt, x="d" if kind == "separation" else "P", title=title(args, contact),
                    physical=physical)
 
-    text = format_rows(curve_rows(curve), output_format(args))
+    fmt = output_format(args)
+    rows = curve_rows(curve)
+    text = format_physical(rows, fmt, contact, comments=not args.no_comments) if physical else format_rows(rows, fmt)
     write_outputs(text, args, plot=plot)
-    if physical:
-        import numpy as np
-
-        fraction = np.nanmax(curve.area_fraction)
-        if fraction > 0.1:
-            print(f"asperity: note: the real contact area reaches {fraction:.0%} of the nominal "
-                  "area; the GW model (independent asperities) is unreliable there", file=sys.stderr)

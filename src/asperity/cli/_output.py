@@ -29,7 +29,8 @@ from .._csv import rows_to_csv
 from .._json import dumps
 from ._args import UsageError
 
-__all__ = ["output_format", "format_rows", "format_json", "curve_rows", "write_outputs", "image_format"]
+__all__ = ["output_format", "format_rows", "format_json", "format_physical", "curve_rows", "write_outputs",
+           "image_format"]
 
 
 def output_format(args, piped: str = "csv") -> str:
@@ -66,6 +67,21 @@ def format_rows(rows: list[dict], fmt: str) -> str:
     out = ["  ".join(n.rjust(w) for n, w in zip(names, widths, strict=True))]
     out += ["  ".join(c.rjust(w) for c, w in zip(row, widths, strict=True)) for row in cells]
     return "\n".join(out) + "\n"
+
+
+def format_physical(rows: list[dict], fmt: str, contact, *, comments: bool = True) -> str:
+    """Rows of a physical result with the contact computed (:meth:`~asperity.physical.PhysicalContact.describe`).
+
+    ``json``: one object ``{"contact": contact.to_dict(), "rows": rows}``.  ``table`` and
+    ``csv``: the description as ``#`` lines, then the rows (``comments=False`` leaves the
+    lines out); ``pandas.read_csv(path, comment='#')`` reads such a CSV.
+    """
+    if fmt == "json":
+        return format_json({"contact": contact.to_dict(), "rows": rows}, indent=1)
+    text = format_rows(rows, fmt)
+    if not comments:
+        return text
+    return "".join(f"# {line}\n" for line in contact.describe().splitlines()) + text
 
 
 def curve_rows(curve) -> list[dict]:

@@ -19,7 +19,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="loads P/(N G b^2): 'a,b,c' or 'start:stop:count' (spaced logarithmically)")
     parser.add_argument("--load", metavar="LIST",
                         help="physical loads with a force unit, e.g. 1mN:1N:50 (spaced logarithmically; "
-                             "with --material)")
+                             "with a physical contact)")
     add_output_arguments(parser)
 
 

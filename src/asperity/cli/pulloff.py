@@ -16,7 +16,8 @@ from ._args import (
 
 NAME = "pulloff"
 HELP = "pull-off force (Table 1)"
-DESCRIPTION = "Largest tensile force |P|/(N G b^2) over separations up to d_max, and where it occurs."
+DESCRIPTION = ("Largest tensile force |P|/(N G b^2) over separations up to d_max, and where it occurs; with a "
+               "physical contact in newtons and metres, with the real contact area there.")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -29,16 +30,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args) -> None:
-    from ._output import format_json, format_rows, output_format, write_outputs
+    from ._output import format_json, format_physical, format_rows, output_format, write_outputs
 
-    if is_physical(args):
-        po = contact_from_args(args).pull_off(args.d_max)
-        row = {"pull_off_N": po.force, "d_m": po.d}
-    else:
-        if args.gamma is None:
-            raise UsageError("pulloff needs --gamma (the adhesion parameter)")
-        po = model_from_args(args).pull_off(args.d_max)
-        row = {"pull_off": po.force, "d": po.d}
     fmt = output_format(args)
-    text = format_json(row) if fmt == "json" else format_rows([row], fmt)
-    write_outputs(text, args)
+    if is_physical(args):
+        contact = contact_from_args(args)
+        row = contact.pull_off(args.d_max).to_dict()
+        write_outputs(format_physical([row], fmt, contact, comments=not args.no_comments), args)
+        return
+    if args.gamma is None:
+        raise UsageError("pulloff needs --gamma (the adhesion parameter)")
+    po = model_from_args(args).pull_off(args.d_max)
+    row = {"pull_off": po.force, "d": po.d}
+    write_outputs(format_json(row) if fmt == "json" else format_rows([row], fmt), args)

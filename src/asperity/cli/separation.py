@@ -18,7 +18,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--d", metavar="LIST",
                         help="separations d/sigma: 'a,b,c' or 'start:stop:count' (linearly spaced)")
     parser.add_argument("--separation", metavar="LIST",
-                        help="physical separations with a length unit, e.g. 0nm:10nm:21 (with --material)")
+                        help="physical separations with a length unit, e.g. 0nm:10nm:21 (with a physical contact)")
     add_output_arguments(parser)
 
 

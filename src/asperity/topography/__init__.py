@@ -44,6 +44,7 @@ References
 
 from .analysis import (
     MAX_ANISOTROPY,
+    METHODS,
     MIN_ALPHA_N,
     MIN_RADIUS_PIXELS,
     MIN_SPACING_PIXELS,
@@ -74,6 +75,7 @@ __all__ = [
     "MIN_RADIUS_PIXELS",
     "MIN_SUMMITS",
     "MAX_ANISOTROPY",
+    "METHODS",
     "MIN_POINTS",
     "FLAT_RTOL",
 ]

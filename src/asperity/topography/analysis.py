@@ -26,6 +26,7 @@ import numpy as np
 from .._validation import check_optional_positive
 from ..groups import regime_beta, roughness_alpha
 from ..materials import as_material
+from ..surface import Surface
 from .detected import detected_summits
 from .read import read_topography
 from .spectral import spectral_summits
@@ -41,7 +42,11 @@ __all__ = [
     "MIN_RADIUS_PIXELS",
     "MIN_SUMMITS",
     "MAX_ANISOTROPY",
+    "METHODS",
 ]
+
+#: The two summit estimators, by name: spectral moments (Nayak/McCool) and summit detection.
+METHODS = ("spectral", "detected")
 
 #: Largest ratio of the two methods' R or eta before a warning.
 RATIO_TOLERANCE = 1.5
@@ -99,6 +104,32 @@ class SurfaceAnalysis:
     b: float | None = None
     groups: dict[str, dict[str, float]] | None = None
     source: str | None = None
+
+    def surface(self, area, method: str = "spectral") -> Surface:
+        """The GW :class:`~asperity.surface.Surface` of one method's summits over a nominal ``area``.
+
+        Parameters
+        ----------
+        area : float, pint.Quantity or str
+            Nominal contact area (m^2), > 0.
+        method : {'spectral', 'detected'}
+            Which estimate: spectral moments (Nayak/McCool, default) or summit detection.
+
+        Returns
+        -------
+        Surface
+            ``sigma_s``, ``R``, ``eta`` of that method; ``source`` names the file and method.
+
+        Raises
+        ------
+        ValueError
+            For an unknown ``method`` or an ``area`` not > 0.
+        """
+        if not isinstance(method, str) or method not in METHODS:
+            raise ValueError(f"method must be one of {', '.join(map(repr, METHODS))}, got {method!r}")
+        summits = getattr(self, method)
+        label = f"{method} summits{' (Nayak/McCool)' if method == 'spectral' else ''}"
+        return summits.surface(area, source=f"{self.source}, {label}" if self.source else label)
 
     def to_dict(self) -> dict[str, Any]:
         """Nested plain dictionary for strict JSON output (NaN and infinity as None)."""

@@ -74,6 +74,7 @@ import math
 import numpy as np
 
 from .._validation import check_positive, check_range
+from ..surface import NAYAK_SIGMA_S
 from .summits import SummitParameters, moments, prepare
 
 __all__ = [
@@ -87,8 +88,6 @@ __all__ = [
     "spectral_summits",
 ]
 
-#: Nayak's constant in the summit-height variance (Nayak 1971; McCool 1986).
-NAYAK_SIGMA_S = 0.8968
 #: Same constant for the heights of profile peaks, :math:`\pi/2 - 1` (Rice 1944).
 RICE_SIGMA_P = math.pi / 2 - 1
 

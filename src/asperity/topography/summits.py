@@ -117,9 +117,15 @@ class SummitParameters:
         """Mean distance between summits, :math:`\\eta^{-1/2}` [m]."""
         return 1.0 / math.sqrt(self.eta)
 
-    def surface(self, area) -> Surface:
-        """The GW :class:`~asperity.surface.Surface` of these summits over a nominal ``area`` (m^2)."""
-        return Surface(**{name: getattr(self, name) for name in GW_PARAMETERS}, area=area)
+    def surface(self, area, *, source: str | None = None) -> Surface:
+        """The GW :class:`~asperity.surface.Surface` of these summits over a nominal ``area`` (m^2).
+
+        ``source`` (default: the method, e.g. ``'spectral summits (Nayak/McCool)'``) labels
+        where the numbers come from.
+        """
+        label = f"{self.method} summits{' (Nayak/McCool)' if self.method == 'spectral' else ''}"
+        return Surface(**{name: getattr(self, name) for name in GW_PARAMETERS}, area=area,
+                       source=label if source is None else source)
 
     def to_dict(self) -> dict[str, Any]:
         """Plain ``float``/``int``/``str``/None dictionary, ready for strict JSON.
