@@ -1,5 +1,6 @@
 """asperity.physical: a material and a surface in SI units, forces in newtons."""
 
+import json
 import math
 
 import mpmath as mp
@@ -225,3 +226,64 @@ def test_shear_strength_as_string(surface):
     assert a.model.params.friction == ConstantShear(1e8 / a.G_star)
     with pytest.raises(ValueError, match=r"friction \(shear strength tau\) must be > 0 Pa"):
         PhysicalContact("Au", surface, friction=0.0)
+
+
+# -- what the contact states about itself ------------------------------------------------------
+
+def test_to_dict_states_the_contact_computed(surface):
+    E, nu, b, w = 78e9, 0.44, 2.885e-10, 3.012
+    for name, e_star, g_star in (("Au", E / (1 - nu**2), E / (1 + nu)),
+                                 ("Au/Au", E / (2 * (1 - nu**2)), E / (2 * (1 + nu)))):
+        c = PhysicalContact(name, surface)
+        d = c.to_dict()
+        assert d["E_star_Pa"] == pytest.approx(e_star, rel=1e-14)
+        assert d["G_star_Pa"] == pytest.approx(g_star, rel=1e-14)
+        assert (d["w_J_m2"], d["b_m"], d["h_m"]) == (w, b, b)
+        assert (d["sigma_s_m"], d["R_m"], d["eta_per_m2"], d["area_m2"], d["N"]) == (SIGMA, RADIUS, ETA, AREA,
+                                                                                      ETA * AREA)
+        assert d["alpha"] == pytest.approx(math.sqrt(SIGMA / RADIUS), rel=1e-15)
+        assert d["beta"] == pytest.approx(math.sqrt(SIGMA * RADIUS) / b, rel=1e-15)
+        assert d["gamma"] == pytest.approx(w / (e_star * b), rel=1e-14)
+        assert d["lambda"] == pytest.approx(md_lambda(RADIUS, w, e_star, w / b), rel=1e-12)  # Eq 14, h = b
+        lam = d["lambda"]
+        assert d["regime"] == ("DMT" if lam < 0.1 else "JKR" if lam > 5 else "Maugis-Dugdale")
+        assert d["body1"] == {"name": "Au", "E_Pa": E, "nu": nu, "rigid": False}
+        assert d["friction"] == {"law": "Hurtado-Kim", "tau_f1": 1 / 43, "tau_f2": 1 / 43 / 30, "a1": 28.0,
+                                 "a2": 8e4}
+        json.dumps(d, allow_nan=False)
+    assert PhysicalContact("Au", surface).to_dict()["body2"]["rigid"] is True
+    assert PhysicalContact("Au/Au", surface).to_dict()["body2"] == {"name": "Au", "E_Pa": E, "nu": nu,
+                                                                     "rigid": False}
+
+
+def test_gold_on_gold_differs_from_gold_on_a_flat(surface):
+    # The issue's "1.6x": the same surface and load give different forces for the two forms.
+    one, two = PhysicalContact("Au", surface), PhysicalContact("Au/Au", surface)
+    assert two.E_star == pytest.approx(one.E_star / 2, rel=1e-14)
+    f1, f2 = one.load_curve([1e-2]).F[0], two.load_curve([1e-2]).F[0]
+    assert f1 / f2 > 1.2 and one.describe() != two.describe()
+
+
+def test_describe_names_every_quantity(surface):
+    text = PhysicalContact("Au/Au", surface, friction=5e7).describe()
+    lines = text.splitlines()
+    assert lines[0] == "contact: Au (E 78 GPa, nu 0.44) on Au (E 78 GPa, nu 0.44)"
+    for needle in ("E* = 48.36 GPa", "G* = 27.08 GPa", "w = 3.012 J/m^2", "h = 288.5 pm", "b = 288.5 pm",
+                   "sigma_s = 2 nm", "R = 1 um", "N = 1e+06 summits", "alpha = 0.04472", "beta = 155",
+                   "lambda = ", "(JKR)", "tau = 50 MPa"):
+        assert needle in text, needle
+    hertz = PhysicalContact("Au", surface, adhesion=False).describe()
+    assert "w = 0 (no adhesion: Hertz)" in hertz and "lambda = 0 (no adhesion: Hertz)" in hertz
+
+
+def test_constant_shear_is_stated_in_pascals(surface):
+    c = PhysicalContact("Au", surface, friction="50MPa")
+    assert c.to_dict()["friction"] == {"law": "constant shear", "tau": pytest.approx(5e7 / c.G_star, rel=1e-15),
+                                       "tau_Pa": pytest.approx(5e7, rel=1e-15)}
+
+
+def test_contact_rejects_wrong_types(surface):
+    with pytest.raises(TypeError, match="adhesion must be True or False"):
+        PhysicalContact("Au", surface, adhesion="no")
+    with pytest.raises(TypeError, match="heights must be"):
+        PhysicalContact("Au", surface, heights=None)

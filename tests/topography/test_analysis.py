@@ -134,3 +134,23 @@ def test_json_output_is_strict(large_surface):
     text = json.dumps(result.to_dict(), allow_nan=False)
     data = json.loads(text)
     assert data["spectral"]["R"] == result.spectral.R and data["detected"]["eta"] == result.detected.eta
+
+
+def test_surface_of_either_method(tmp_path, wide_band):
+    from asperity.surface import Surface
+
+    heights, _, _ = wide_band
+    path = tmp_path / "surface.nc"
+    as_map(heights[:128, :128] * 1e9, periodic=False, unit="nm", pixel=DX * 1e9).to_netcdf(str(path))
+    result = analyse_surface(path)
+    for method in ("spectral", "detected"):
+        p = getattr(result, method)
+        s = result.surface("1mm^2", method)
+        assert s == Surface(p.sigma_s, p.R, p.eta, 1e-6)
+        assert s.source.startswith(f"{path}, {method} summits")
+    assert result.surface(1e-6) == result.surface(1e-6, "spectral")
+    assert result.spectral.surface(1e-6).source == "spectral summits (Nayak/McCool)"
+    with pytest.raises(ValueError, match="method must be one of 'spectral', 'detected'"):
+        result.surface(1e-6, "nayak")
+    with pytest.raises(ValueError, match="area must be > 0"):
+        result.surface(-1.0)

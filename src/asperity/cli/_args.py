@@ -85,8 +85,9 @@ MATERIAL_FORMS = ("--material Au is ONE gold body on a rigid flat (the paper's s
 BODY_OPTIONS = ("material", "E", "material2", "E2", "nu2", "b", "w", "h", "sigma0")
 SURFACE_OPTIONS = ("sigma_s", "rms", "alpha_n", "R", "eta", "area", "surface", "size", "unit", "method")
 FRICTION_OPTIONS = ("tau", "tau_f1", "tau_f2", "a1", "a2")
-#: Every option that makes a command physical (``--nu`` and the Hurtado-Kim constants serve both forms).
-CONTACT_OPTIONS = (*BODY_OPTIONS, *SURFACE_OPTIONS, "tau")
+#: Every option that makes a command physical (``--nu`` and the Hurtado-Kim constants serve both forms;
+#: ``--tau`` needs a physical contact and says so).
+CONTACT_OPTIONS = (*BODY_OPTIONS, *SURFACE_OPTIONS)
 
 
 # -- paths ---------------------------------------------------------------------------------

@@ -1,0 +1,106 @@
+"""asperity.physical_results: SI results, the area-fraction flags and AreaFractionWarning."""
+
+import json
+import warnings
+
+import numpy as np
+import pytest
+
+import asperity
+from asperity.physical import PhysicalContact
+from asperity.physical_results import (
+    AREA_FRACTION_CAUTION,
+    AREA_FRACTION_LIMIT,
+    AreaFractionWarning,
+    warn_area_fraction,
+)
+from asperity.surface import Surface
+
+#: A dense gold surface: N = 2e7 summits on 1 mm^2, whose real contact area grows past the
+#: nominal one under large loads.
+DENSE = Surface(5e-9, 0.8e-6, 2e13, 1e-6)
+
+
+@pytest.fixture(scope="module")
+def dense():
+    return PhysicalContact("Au", DENSE)
+
+
+def test_thresholds_and_category():
+    assert (AREA_FRACTION_CAUTION, AREA_FRACTION_LIMIT) == (0.1, 1.0)
+    assert issubclass(AreaFractionWarning, UserWarning) and asperity.AreaFractionWarning is AreaFractionWarning
+
+
+def test_small_area_fraction_gives_no_warning(dense):
+    curve = dense.load_curve([1e-3, 1e-2])  # pytest turns any warning into an error
+    assert curve.max_area_fraction < AREA_FRACTION_CAUTION
+    assert not curve.area_fraction_high and not curve.exceeds_nominal_area
+
+
+def test_caution_level_warns_once(dense):
+    # Find, from the API's own areas, loads with 10 % < A/A0 < 100 %.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", AreaFractionWarning)
+        probe = dense.load_curve(np.geomspace(1e-2, 1e5, 60))
+    fraction = probe.area / DENSE.area  # independent of the property under test
+    inside = probe.P[(fraction > 0.1) & (fraction < 1.0)]
+    assert inside.size >= 2
+    with pytest.warns(AreaFractionWarning, match=r"of the nominal area \(more than 10%\)") as record:
+        curve = dense.load_curve(inside)
+    assert len(record) == 1  # once per call, not once per point
+    assert curve.area_fraction_high and not curve.exceeds_nominal_area
+    assert curve.max_area_fraction == pytest.approx(np.max(curve.area) / DENSE.area, rel=1e-15)
+
+
+def test_beyond_the_nominal_area_warns_that_the_model_is_broken(dense):
+    with pytest.warns(AreaFractionWarning, match=r"times the nominal area .*not physical") as record:
+        curve = dense.load_curve([1.0, 1e5])
+    assert len(record) == 1 and curve.exceeds_nominal_area and curve.area[-1] > DENSE.area
+
+
+def test_separation_curves_warn_too(dense):
+    with pytest.warns(AreaFractionWarning):
+        dense.separation_curve([-20e-9, 0.0])
+
+
+def test_users_can_filter_or_escalate(dense):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", asperity.AreaFractionWarning)
+        dense.load_curve([1e5])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", asperity.AreaFractionWarning)
+        with pytest.raises(AreaFractionWarning):
+            dense.load_curve([1e5])
+
+
+def test_warning_points_at_the_callers_line(dense):
+    with pytest.warns(AreaFractionWarning) as record:
+        dense.load_curve([1e5])
+    assert record[0].filename == __file__
+
+
+def test_warn_area_fraction_checks_its_inputs():
+    warn_area_fraction(0.05)
+    warn_area_fraction(float("nan"))
+    with pytest.raises(TypeError, match="fraction must be a real number"):
+        warn_area_fraction("0.5")
+    with pytest.raises(TypeError, match="stacklevel must be an integer"):
+        warn_area_fraction(0.5, stacklevel=1.5)
+
+
+def test_pull_off_reports_the_area_at_pull_off(dense):
+    po = dense.pull_off()
+    assert po.exists and po.nominal_area == DENSE.area
+    ref = dense.separation_curve([po.d]).area[0]  # the API's own area at that separation
+    assert po.area == pytest.approx(ref, rel=1e-12) and po.area_fraction == pytest.approx(ref / DENSE.area)
+    d = po.to_dict()
+    assert d == {"pull_off_N": po.force, "d_m": po.d, "exists": True, "area_m2": po.area,
+                 "area_fraction": po.area_fraction}
+    json.dumps(d, allow_nan=False)
+
+
+def test_pull_off_without_adhesion_has_no_area():
+    po = PhysicalContact("Au", DENSE, adhesion=False).pull_off()
+    assert not po.exists and po.area == 0.0
+    assert po.to_dict()["d_m"] is None
+    json.dumps(po.to_dict(), allow_nan=False)
