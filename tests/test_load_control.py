@@ -31,7 +31,7 @@ def test_start_separation_is_the_hertz_estimate():
     assert start_separation(DRY, 1.0, -2.5) == -3.5  # at least one sigma below d_hi
     with pytest.raises(ValueError, match="too large"):
         start_separation(DRY, 1e20, 10.0)
-    with pytest.raises(ValueError, match="params"):
+    with pytest.raises(TypeError, match="params must be an asperity.asperity_law.ModelParameters"):
         start_separation({"alpha": 0.01}, 1.0, 10.0)
 
 
@@ -64,8 +64,10 @@ def test_force_grid_derivative_is_the_slope():
     np.testing.assert_allclose(dP, fd, rtol=1e-6, atol=1e-6 * np.abs(P).max())
     np.testing.assert_allclose(P, force(tab, grid), rtol=0)
     assert force_grid(tab, -2.0, 4.0)[0].size == 120  # one point per 0.05 sigma
-    for bad in (1, 2.5, True, "3"):
-        with pytest.raises(ValueError, match="n"):
+    with pytest.raises(ValueError, match=r"n must lie in \[2, 1000000\]"):
+        force_grid(tab, -2.0, 4.0, n=1)
+    for bad in (2.5, True, "3"):
+        with pytest.raises(TypeError, match="n must be an integer"):
             force_grid(tab, -2.0, 4.0, n=bad)
     with pytest.raises(ValueError, match="serves"):
         force_grid(tab, -5.0, 4.0)

@@ -176,7 +176,7 @@ def test_as_material():
     assert as_material(gold) is gold
     assert as_material(" au ") == gold
     assert as_material("Au/Au") == material("Au/Au")
-    with pytest.raises(TypeError, match=r"material must be an asperity.materials.Material .* got float 3.0"):
+    with pytest.raises(TypeError, match=r"body must be an asperity.materials.Material .* got float 3.0"):
         as_material(3.0)
     with pytest.raises(TypeError, match="second must be"):
         pair("Au", None)

@@ -24,7 +24,7 @@ def test_check_tabulation():
     tab = Tabulation(P, -3.0, 10.0)
     assert check_tabulation(tab, -3, 10) == (-3.0, 10.0)
     assert check_tabulation(tab, -30.0, 10.0, covered=False) == (-30.0, 10.0)
-    with pytest.raises(ValueError, match="serves d/sigma in"):
+    with pytest.raises(ValueError, match=r"d_lo, d_hi = -30, 10 lie outside the separations the tabulation serves"):
         check_tabulation(tab, -30.0, 10.0)
     with pytest.raises(ValueError, match="must be <"):
         check_tabulation(tab, 2.0, 2.0)

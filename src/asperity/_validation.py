@@ -28,6 +28,12 @@ __all__ = [
     "check_optional_positive",
     "check_text",
     "check_bool",
+    "check_callable",
+    "check_integer",
+    "check_1d",
+    "check_path",
+    "check_finite_result",
+    "check_scalar_real",
     "scalar",
 ]
 
@@ -180,6 +186,11 @@ def check_optional_positive(value, name: str, unit: str | None = None, *, allow_
     return x
 
 
+def check_scalar_real(value, name: str) -> float:
+    """One finite real number (any sign) as a float; arrays, booleans, None, strings are errors."""
+    return _as_scalar(value, name, None)
+
+
 def check_scalar_poisson(value, name: str = "nu") -> float:
     """One Poisson's ratio of an isotropic elastic solid, -1 < nu < 0.5, as a float."""
     x = _as_scalar(value, name, "")
@@ -200,6 +211,73 @@ def check_bool(value, name: str) -> bool:
     if not isinstance(value, bool | np.bool_):
         raise TypeError(f"{name} must be True or False, got {type(value).__name__} {_short_repr(value)}")
     return bool(value)
+
+
+def check_callable(value, name: str):
+    """``value`` if it is callable; otherwise a :class:`TypeError` naming ``name``."""
+    if not callable(value):
+        raise TypeError(f"{name} must be callable, got {type(value).__name__} {_short_repr(value)}")
+    return value
+
+
+def check_integer(value, name: str, lo: int, hi: int) -> int:
+    """One integer (Python or NumPy, not a boolean) with lo <= value <= hi, as an ``int``."""
+    if isinstance(value, bool | np.bool_) or not isinstance(value, int | np.integer):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {_short_repr(value)}")
+    if not lo <= value <= hi:
+        raise ValueError(f"{name} must lie in [{lo}, {hi}], got {value!r}")
+    return int(value)
+
+
+def check_1d(value, name: str, *, allow_empty: bool = False) -> np.ndarray:
+    """A scalar or 1-D list/array of finite reals as a 1-D float array; 2-D input is an error, not flattened."""
+    arr = as_float_array(value, name, allow_empty=allow_empty)
+    if arr.ndim > 1:
+        raise ValueError(f"{name} must be a number or a 1-D list or array, got an array of shape {arr.shape}")
+    return arr.reshape(-1)
+
+
+def check_path(value, name: str, *, directory: bool = False) -> str:
+    """A file (or, with ``directory``, a directory) name: ``str`` or ``os.PathLike``, not empty.
+
+    A file name that is an existing directory is a :class:`ValueError`, as is a directory
+    name that is an existing file; another type is a :class:`TypeError`.  Returns the name
+    as ``str``.
+    """
+    import os
+
+    if isinstance(value, bytes) or not isinstance(value, str | os.PathLike):
+        raise TypeError(f"{name} must be a file name (str or os.PathLike), got {type(value).__name__} "
+                        f"{_short_repr(value)}")
+    text = os.fspath(value)
+    if not isinstance(text, str):
+        raise TypeError(f"{name} must be a file name (str or os.PathLike), got {type(value).__name__}")
+    if text == "":
+        raise ValueError(f"{name} must not be empty")
+    if not directory and os.path.isdir(text):
+        raise ValueError(f"{name} = {text!r} is a directory; give a file name")
+    if directory and os.path.exists(text) and not os.path.isdir(text):
+        raise ValueError(f"{name} = {text!r} is a file, not a directory")
+    return text
+
+
+def check_finite_result(result, what: str, **inputs):
+    """``result`` unchanged if every element is finite; else a ValueError naming the inputs.
+
+    Compute ``result`` under ``np.errstate(all="ignore")`` so that no warning precedes the
+    error.  The message names the inputs ``inputs`` (name -> value) of extreme magnitude
+    (beyond 1e100 or below 1e-100), or all of them if none is.
+    """
+    if np.all(np.isfinite(np.asarray(result, dtype=float))):
+        return result
+
+    def extreme(v):
+        a = np.abs(np.asarray(v, dtype=float))
+        return bool(np.any((a > 1e100) | ((a < 1e-100) & (a > 0))))
+
+    named = {k: v for k, v in inputs.items() if extreme(v)} or inputs
+    listed = ", ".join(f"{k} = {_short_repr(v)}" for k, v in named.items())
+    raise ValueError(f"{what} overflows double precision for {listed}: give values of physical size")
 
 
 def _short_repr(value) -> str:

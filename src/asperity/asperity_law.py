@@ -25,12 +25,12 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 
 from . import groups
-from ._validation import as_float_array, check_nonnegative, check_poisson, check_positive
+from ._validation import as_float_array, check_scalar_poisson, check_scalar_positive
 from .friction_stress import FrictionLaw, HurtadoKim
 from .hertz import hertz_force, hertz_radius
 from .maugis_dugdale import A_MAX, LAMBDA_RANGE, md_branch_end, md_curve, md_solve, md_t_of_radius
 
-__all__ = ["ModelParameters", "ContactLaw", "AsperityLaw", "check_law"]
+__all__ = ["ModelParameters", "ContactLaw", "AsperityLaw", "check_law", "check_parameters"]
 
 
 @dataclass(frozen=True)
@@ -62,18 +62,13 @@ class ModelParameters:
     friction: FrictionLaw = field(default_factory=HurtadoKim)
 
     def __post_init__(self):
-        for name, check in (("alpha", check_positive), ("beta", check_positive),
-                            ("gamma", check_nonnegative), ("h_over_b", check_positive)):
-            value = getattr(self, name)
-            if np.ndim(value) != 0:
-                raise ValueError(f"{name} must be a scalar, got shape {np.shape(value)}")
-            object.__setattr__(self, name, float(check(value, name)))
-        if np.ndim(self.nu) != 0:
-            raise ValueError("nu must be a scalar")
-        object.__setattr__(self, "nu", float(check_poisson(self.nu)))
+        for name in ("alpha", "beta", "gamma", "h_over_b"):
+            value = check_scalar_positive(getattr(self, name), name, allow_zero=name == "gamma")
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "nu", check_scalar_poisson(self.nu))
         if not isinstance(self.friction, FrictionLaw):
-            raise ValueError("friction must provide stress(a_bar) and breakpoints() "
-                             "(e.g. HurtadoKim() or ConstantShear(tau))")
+            raise TypeError("friction must provide stress(a_bar) and breakpoints() "
+                            "(e.g. HurtadoKim() or ConstantShear(tau))")
 
     @property
     def adhesive(self) -> bool:
@@ -101,6 +96,30 @@ def _check_scales(p: ModelParameters):
                          f"Maugis parameter lambda = {float(lam):.3g} (Eq 15) outside [{lo:g}, {hi:g}]; "
                          + ("adhesion this weak is negligible: use gamma = 0" if lam < lo
                             else "check gamma and h_over_b (h is an atomic distance)"))
+
+
+def check_parameters(params, name: str = "params") -> ModelParameters:
+    """``params`` if it is a :class:`ModelParameters`; otherwise a :class:`TypeError` naming ``name``.
+
+    Parameters
+    ----------
+    params : ModelParameters
+        The value to check.
+    name : str
+        Parameter name for the message.
+
+    Returns
+    -------
+    ModelParameters
+
+    Raises
+    ------
+    TypeError
+        If ``params`` is not a :class:`ModelParameters`.
+    """
+    if not isinstance(params, ModelParameters):
+        raise TypeError(f"{name} must be an asperity.asperity_law.ModelParameters, got {type(params).__name__}")
+    return params
 
 
 @runtime_checkable
@@ -169,6 +188,7 @@ def check_law(law, params: ModelParameters):
     >>> isinstance(law, ContactLaw), law.u_end
     (True, 0.0)
     """
+    check_parameters(params)
     if law is None:
         return AsperityLaw(params)
     if not isinstance(law, ContactLaw):
@@ -208,7 +228,7 @@ class AsperityLaw:
     """
 
     def __init__(self, params: ModelParameters):
-        self.params = p = params
+        self.params = p = check_parameters(params)
         _check_scales(p)
         if p.adhesive:
             self.lam = float(groups.maugis_lambda(p.alpha, p.beta, p.gamma, p.h_over_b))

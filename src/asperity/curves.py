@@ -19,7 +19,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from ._csv import columns_to_csv, columns_to_dataframe
-from ._validation import as_float_array, scalar
+from ._validation import check_1d, check_scalar_real
 from .asperity_law import ContactLaw, ModelParameters, check_law
 from .heights import GAUSSIAN, HeightDistribution
 from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
@@ -141,7 +141,7 @@ class Model:
     # -- curves ---------------------------------------------------------------------
     def separation_curve(self, d) -> CurveResult:
         """All quantities at separations ``d``: :func:`separation_curve` for this model."""
-        d = check_separation(d, d_max=self.d_top).ravel()
+        d = check_separation(check_1d(d, "d"), d_max=self.d_top)
         tab = self.tabulation(float(d.min()), max(float(d.max()), 10.0))
         return self._result(d, tab.sums(d)[0])
 
@@ -153,7 +153,7 @@ class Model:
         """
         if d_max is None:
             d_max = self.d_search
-        d_max = float(scalar(as_float_array(d_max, "d_max"), "d_max"))
+        d_max = check_scalar_real(d_max, "d_max")
         if not 0.0 < d_max <= self.d_top:
             raise ValueError(f"d_max must lie in (0, {self.d_top:.6g}], got {d_max!r}")
         if d_max not in self._pull_off:
@@ -165,7 +165,7 @@ class Model:
 
     def load_curve(self, P) -> CurveResult:
         """All quantities at the stable separation for each load ``P``: :func:`load_curve` for this model."""
-        P = as_float_array(P, "P").ravel()
+        P = check_1d(P, "P")
         if not self.params.adhesive and np.any(P <= 0):
             raise ValueError("P (load) must be > 0 without adhesion (gamma = 0); "
                              f"got min {P.min():g}")

@@ -27,7 +27,7 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
-from ._validation import as_float_array, check_positive
+from ._validation import as_float_array, check_finite_result, check_positive, check_scalar_positive
 
 __all__ = [
     "TAU_F1",
@@ -53,10 +53,10 @@ A2 = 8.0e4
 
 
 def _check_hk(tau_f1, tau_f2, a1, a2):
-    tau_f1 = float(check_positive(tau_f1, "tau_f1"))
-    tau_f2 = float(check_positive(tau_f2, "tau_f2"))
-    a1 = float(check_positive(a1, "a1"))
-    a2 = float(check_positive(a2, "a2"))
+    tau_f1 = check_scalar_positive(tau_f1, "tau_f1")
+    tau_f2 = check_scalar_positive(tau_f2, "tau_f2")
+    a1 = check_scalar_positive(a1, "a1")
+    a2 = check_scalar_positive(a2, "a2")
     if not a2 > a1:
         raise ValueError(f"a2 must be > a1 (region 2 is a1 < a_bar < a2), got a1={a1}, a2={a2}")
     return tau_f1, tau_f2, a1, a2
@@ -151,7 +151,10 @@ def hk_friction_force(a_bar, tau_f1=TAU_F1, tau_f2=TAU_F2, a1=A1, a2=A2):
     Adams et al., Eq (4) (with the :math:`\pi` restored) and Eq (10).
     """
     a = as_float_array(a_bar, "a_bar", allow_empty=True)
-    return np.pi * hk_friction_stress(a, tau_f1, tau_f2, a1, a2) * a**2
+    stress = hk_friction_stress(a, tau_f1, tau_f2, a1, a2)
+    with np.errstate(all="ignore"):
+        force = np.pi * stress * a**2
+    return check_finite_result(force, "the friction force", a_bar=a)
 
 
 @runtime_checkable

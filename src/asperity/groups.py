@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_poisson, check_positive
+from ._validation import check_finite_result, check_poisson, check_positive, check_text
 
 __all__ = [
     "roughness_alpha",
@@ -69,7 +69,9 @@ def roughness_alpha(sigma, R):
     ----------
     Adams et al., Eq (7).
     """
-    return np.sqrt(check_positive(sigma, "sigma") / check_positive(R, "R"))
+    sigma, R = check_positive(sigma, "sigma"), check_positive(R, "R")
+    with np.errstate(all="ignore"):
+        return check_finite_result(np.sqrt(sigma / R), "alpha", sigma=sigma, R=R)
 
 
 def regime_beta(sigma, R, b):
@@ -84,7 +86,9 @@ def regime_beta(sigma, R, b):
     ----------
     Adams et al., Eq (7).
     """
-    return np.sqrt(check_positive(sigma, "sigma") * check_positive(R, "R")) / check_positive(b, "b")
+    sigma, R, b = check_positive(sigma, "sigma"), check_positive(R, "R"), check_positive(b, "b")
+    with np.errstate(all="ignore"):
+        return check_finite_result(np.sqrt(sigma * R) / b, "beta", sigma=sigma, R=R, b=b)
 
 
 def adhesion_gamma(w, E_star, b):
@@ -103,12 +107,16 @@ def adhesion_gamma(w, E_star, b):
     ----------
     Adams et al., Eq (16).
     """
-    return check_positive(w, "w") / (check_positive(E_star, "E_star") * check_positive(b, "b"))
+    w, E_star, b = check_positive(w, "w"), check_positive(E_star, "E_star"), check_positive(b, "b")
+    with np.errstate(all="ignore"):
+        return check_finite_result(w / (E_star * b), "gamma", w=w, E_star=E_star, b=b)
 
 
 def composite_modulus(E, nu):
     r""":math:`E^* = E/(1-\nu^2)` of an elastic body against a rigid flat."""
-    return check_positive(E, "E") / (1.0 - check_poisson(nu) ** 2)
+    E, nu = check_positive(E, "E"), check_poisson(nu)
+    with np.errstate(all="ignore"):
+        return check_finite_result(E / (1.0 - nu**2), "E*", E=E, nu=nu)
 
 
 def modulus_ratio(nu):
@@ -135,7 +143,9 @@ def maugis_lambda(alpha, beta, gamma, h_over_b=1.0):
     """
     alpha, beta, gamma = _groups(alpha, beta, gamma)
     h_over_b = check_positive(h_over_b, "h_over_b")
-    return np.cbrt(9.0 * beta * gamma**2 / (2.0 * np.pi * alpha)) / h_over_b
+    with np.errstate(all="ignore"):
+        lam = np.cbrt(9.0 * beta * gamma**2 / (2.0 * np.pi * alpha)) / h_over_b
+    return check_finite_result(lam, "lambda", alpha=alpha, beta=beta, gamma=gamma, h_over_b=h_over_b)
 
 
 def penetration_scale(alpha, beta, gamma):
@@ -146,7 +156,9 @@ def penetration_scale(alpha, beta, gamma):
     Adams et al., Eq (17).
     """
     alpha, beta, gamma = _groups(alpha, beta, gamma)
-    return np.cbrt(3.0 * np.pi * gamma / (4.0 * alpha**2 * beta)) ** 2
+    with np.errstate(all="ignore"):
+        scale = np.cbrt(3.0 * np.pi * gamma / (4.0 * alpha**2 * beta)) ** 2
+    return check_finite_result(scale, "delta_hat", alpha=alpha, beta=beta, gamma=gamma)
 
 
 def load_scale(alpha, beta, gamma, nu=0.3, form: str = "derived"):
@@ -169,11 +181,11 @@ def load_scale(alpha, beta, gamma, nu=0.3, form: str = "derived"):
     """
     alpha, beta, gamma = _groups(alpha, beta, gamma)
     nu = check_poisson(nu)
-    if form == "derived":
-        return (1.0 - nu) * alpha / (2.0 * np.pi * beta * gamma)
-    if form == "printed":
-        return (1.0 - nu) * alpha**2 / (2.0 * np.pi * beta * gamma)
-    raise ValueError(f"form must be 'derived' or 'printed', got {form!r}")
+    if check_text(form, "form") not in ("derived", "printed"):
+        raise ValueError(f"form must be 'derived' or 'printed', got {form!r}")
+    with np.errstate(all="ignore"):
+        scale = (1.0 - nu) * alpha ** (1 if form == "derived" else 2) / (2.0 * np.pi * beta * gamma)
+    return check_finite_result(scale, "P_hat", alpha=alpha, beta=beta, gamma=gamma)
 
 
 def radius_scale(alpha, beta, gamma):
@@ -184,14 +196,20 @@ def radius_scale(alpha, beta, gamma):
     Adams et al., Eq (17).
     """
     alpha, beta, gamma = _groups(alpha, beta, gamma)
-    return np.cbrt(4.0 * (alpha / beta) ** 2 / (3.0 * np.pi * gamma))
+    with np.errstate(all="ignore"):
+        scale = np.cbrt(4.0 * (alpha / beta) ** 2 / (3.0 * np.pi * gamma))
+    return check_finite_result(scale, "A_hat", alpha=alpha, beta=beta, gamma=gamma)
 
 
 def sigma_over_b(alpha, beta):
     r""":math:`\sigma/b = \alpha\beta` (Eq 20)."""
-    return check_positive(alpha, "alpha") * check_positive(beta, "beta")
+    alpha, beta = check_positive(alpha, "alpha"), check_positive(beta, "beta")
+    with np.errstate(all="ignore"):
+        return check_finite_result(alpha * beta, "sigma/b", alpha=alpha, beta=beta)
 
 
 def radius_over_b(alpha, beta):
     r""":math:`R/b = \beta/\alpha` (Eq 20)."""
-    return check_positive(beta, "beta") / check_positive(alpha, "alpha")
+    alpha, beta = check_positive(alpha, "alpha"), check_positive(beta, "beta")
+    with np.errstate(all="ignore"):
+        return check_finite_result(beta / alpha, "R/b", alpha=alpha, beta=beta)

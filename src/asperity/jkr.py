@@ -132,6 +132,8 @@ def jkr_pull_off(control: str = "load"):
     ----------
     Johnson, Kendall & Roberts (1971); Maugis (1992).
     """
+    if not isinstance(control, str) or control not in ("load", "displacement"):
+        raise ValueError(f"control must be 'load' or 'displacement', got {control!r}")
     if control == "load":
         return 1.5 ** (1.0 / 3.0), -1.5
     if control == "displacement":

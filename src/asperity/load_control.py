@@ -29,10 +29,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._validation import as_float_array, scalar
-from .asperity_law import ModelParameters
+from ._validation import check_1d, check_integer, check_scalar_real
+from .asperity_law import U_END_LIMIT, ModelParameters, check_parameters
 from .pull_off_search import PullOff, find_pull_off
-from .tabulation import D_MIN, Tabulation, check_tabulation
+from .tabulation import D_MAX, D_MIN, Tabulation, check_tabulation
 
 __all__ = ["PullOff", "Branch", "start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
            "invert_branch", "find_pull_off"]
@@ -101,11 +101,11 @@ def start_separation(params: ModelParameters, P_max, d_hi) -> float:
     ----------
     Adams et al., Eq (6); Greenwood & Williamson (1966).
     """
-    if not isinstance(params, ModelParameters):
-        raise ValueError(f"params must be ModelParameters, got {type(params).__name__}")
-    P_max = float(scalar(as_float_array(P_max, "P_max"), "P_max"))
-    d_hi = float(scalar(as_float_array(d_hi, "d_hi"), "d_hi"))
-    p = params
+    p = check_parameters(params)
+    P_max = check_scalar_real(P_max, "P_max")
+    d_hi = check_scalar_real(d_hi, "d_hi")
+    if not D_MIN <= d_hi <= D_MAX + U_END_LIMIT:
+        raise ValueError(f"d_hi (separation d/sigma) must lie in [{D_MIN:g}, {D_MAX + U_END_LIMIT:g}], got {d_hi!r}")
     c = (8.0 / 3.0) / (1.0 - p.nu) * p.alpha * p.beta**2
     d_lo = min(-3.0, d_hi - 1.0, -((max(P_max, 0.0) / c) ** (2.0 / 3.0)) - 2.0)
     _check_floor(d_lo, P_max)
@@ -114,7 +114,8 @@ def start_separation(params: ModelParameters, P_max, d_hi) -> float:
 
 def _check_floor(d_lo, P_max):
     if d_lo < D_MIN:
-        raise ValueError(f"P (load) = {P_max:g} is too large: it needs a separation below d/sigma = {D_MIN:g}")
+        raise ValueError(f"P_max (the largest load P) = {P_max:g} is too large: it needs a separation below "
+                         f"d/sigma = {D_MIN:g}")
 
 
 def bracket_low(tab: Tabulation, P_max, d_lo, d_hi) -> tuple[float, Tabulation]:
@@ -160,7 +161,7 @@ def bracket_low(tab: Tabulation, P_max, d_lo, d_hi) -> tuple[float, Tabulation]:
     Adams et al., Eqs (6), (18).
     """
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi, covered=False)
-    P_max = float(scalar(as_float_array(P_max, "P_max"), "P_max"))
+    P_max = check_scalar_real(P_max, "P_max")
     while True:
         _check_floor(d_lo, P_max)
         tab = tab.extended(d_lo, d_hi)
@@ -203,9 +204,7 @@ def force_grid(tab: Tabulation, d_lo, d_hi, n=None):
     Adams et al., Eqs (6), (18).
     """
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi)
-    if n is not None and (isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 2):
-        raise ValueError(f"n (grid points) must be an integer >= 2, got {n!r}")
-    n = int(np.clip((d_hi - d_lo) / 0.05, 100, 800)) if n is None else int(n)
+    n = int(np.clip((d_hi - d_lo) / 0.05, 100, 800)) if n is None else check_integer(n, "n", 2, 10**6)
     grid = np.linspace(d_lo, d_hi, n)
     g0, g1 = tab.sums(grid, order=1)
     return grid, g0[:, 1], g1[:, 1]
@@ -258,6 +257,8 @@ def stable_branch(tab: Tabulation, d_lo, d_hi, *, d_top=None, P_min=None, pull_o
     Adams et al., Eq (18), Table 1.
     """
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi)
+    if pull_off is not None and not isinstance(pull_off, PullOff):
+        raise TypeError(f"pull_off must be an asperity.PullOff or None, got {type(pull_off).__name__}")
     grid, Pg, dPg = force_grid(tab, d_lo, d_hi)
     i = int(np.argmin(Pg))
     if Pg[i] < 0:  # a pull-off force exists: the branch ends there; this grid locates it
@@ -267,7 +268,11 @@ def stable_branch(tab: Tabulation, d_lo, d_hi, *, d_top=None, P_min=None, pull_o
         return Branch(np.append(grid[:i], pull_off.d), np.append(Pg[:i], floor), np.append(dPg[:i], 0.0), tab,
                       pull_off)
     grid, Pg, dPg = grid[:i + 1], Pg[:i + 1], dPg[:i + 1]
-    d_top = d_hi if d_top is None else float(scalar(as_float_array(d_top, "d_top"), "d_top"))
+    d_top = d_hi if d_top is None else check_scalar_real(d_top, "d_top")
+    if not d_hi <= d_top <= D_MAX - tab.law.u_end:
+        raise ValueError(f"d_top must lie in [d_hi, {D_MAX - tab.law.u_end:.6g}] = [{d_hi:g}, "
+                         f"{D_MAX - tab.law.u_end:.6g}], got {d_top!r}")
+    P_min = None if P_min is None else check_scalar_real(P_min, "P_min")
     if P_min is not None and P_min < Pg[-1] and grid[-1] < d_top:  # tiny loads: the flat is far out
         tab = tab.extended(d_lo, d_top)
         more, Pm, dPm = force_grid(tab, grid[-1], d_top, n=200)
@@ -311,13 +316,13 @@ def branch_guess(P, grid, Pg, dPg):
     ----------
     Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980) 238 (cubic Hermite interpolation).
     """
-    P = as_float_array(P, "P").ravel()
+    P = check_1d(P, "P")
     grid, Pg, dPg = _check_grid(grid, Pg, dPg)
     return _branch_guess(P, grid, Pg, dPg)
 
 
 def _check_grid(grid, Pg, dPg):
-    grid, Pg, dPg = (as_float_array(x, n).ravel() for x, n in ((grid, "grid"), (Pg, "Pg"), (dPg, "dPg")))
+    grid, Pg, dPg = (check_1d(x, n) for x, n in ((grid, "grid"), (Pg, "Pg"), (dPg, "dPg")))
     if not (grid.size >= 2 and grid.size == Pg.size == dPg.size and np.all(np.diff(grid) > 0)):
         raise ValueError("grid must be increasing, with Pg and dPg of its length (at least 2 points)")
     return grid, Pg, dPg
@@ -396,9 +401,9 @@ def invert_branch(tab: Tabulation, P, grid, Pg, dPg):
     ----------
     Adams et al., Eqs (6), (18).
     """
-    P = as_float_array(P, "P").ravel()
+    P = check_1d(P, "P")
     grid, Pg, dPg = _check_grid(grid, Pg, dPg)
-    check_tabulation(tab, grid[0], grid[-1], names=("grid[0]", "grid[-1]"))
+    check_tabulation(tab, grid[0], grid[-1], names=("grid", "grid"))
     sign = 1.0 if Pg[0] >= Pg[-1] else -1.0  # work on a falling branch: -P on a rising one
     lo, hi = min(Pg[0], Pg[-1]), max(Pg[0], Pg[-1])
     if np.any((P < lo) | (P > hi)):

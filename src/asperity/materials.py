@@ -194,7 +194,7 @@ class Material:
 
 
 
-def as_material(body, name: str = "material") -> Material:
+def as_material(body, name: str = "body") -> Material:
     """A :class:`Material` from a Material (returned as is) or a table name (:func:`material`).
 
     Parameters
@@ -218,7 +218,10 @@ def as_material(body, name: str = "material") -> Material:
     if isinstance(body, Material):
         return body
     if isinstance(body, str):
-        return material(body)
+        try:
+            return material(body)
+        except ValueError as err:
+            raise ValueError(f"{name}: {err}") from None
     raise TypeError(f"{name} must be an asperity.materials.Material or a material name from the table "
                     f"(e.g. 'Au'), got {type(body).__name__} {body!r}")
 
@@ -288,7 +291,7 @@ def pair(first, second, *, w=None, b=None, h=None, name: str | None = None) -> M
         if body.bodies:
             raise ValueError(f"{what} must be one body, got the pair {body.name!r}")
     g_star = 2.0 * one.G * two.G / (one.G + two.G)
-    label = name or f"{one.name}/{two.name}"
+    label = f"{one.name}/{two.name}" if name is None else check_text(name, "name")
     nu_eff = _check_effective_poisson(_effective_poisson(one, two), label)
     if w is None and one.name.lower() == two.name.lower():
         w = one.w

@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_positive
+from ._validation import as_float_array, check_finite_result, check_positive
 from .maugis_dugdale_branch import (
     A_MAX,
     DELTA_MAX,
@@ -421,6 +421,9 @@ def md_lambda(R, w, E_star, sigma0):
     """
     R = check_positive(R, "R")
     w = check_positive(w, "w")
-    K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    E_star = check_positive(E_star, "E_star")
     sigma0 = check_positive(sigma0, "sigma0")
-    return 2.0 * sigma0 * np.cbrt(R / (np.pi * w * K * K))
+    with np.errstate(all="ignore"):
+        K = (4.0 / 3.0) * E_star
+        lam = 2.0 * sigma0 * np.cbrt(R / (np.pi * w * K * K))
+    return check_finite_result(lam, "lambda", R=R, w=w, E_star=E_star, sigma0=sigma0)

@@ -361,10 +361,10 @@ def md_pull_off(lam, control: str = "load") -> BranchPoint:
     Maugis (1992), Johnson & Greenwood (1997).
     """
     lam = float(scalar(check_lambda(lam), "lam"))
+    if not isinstance(control, str) or control not in ("load", "displacement"):
+        raise ValueError(f"control must be 'load' or 'displacement', got {control!r}")
     if control == "displacement":
         return _branch_end(lam)
-    if control != "load":
-        raise ValueError(f"control must be 'load' or 'displacement', got {control!r}")
     return _load_pull_off(lam)
 
 

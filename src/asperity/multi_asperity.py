@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_poisson
+from ._validation import as_float_array, check_poisson
 from .asperity_law import ModelParameters, check_law
 from .heights import GAUSSIAN, HeightDistribution
 from .tabulation import D_MAX, D_MIN, Tabulation, check_separation
@@ -294,21 +294,32 @@ def mean_pressure(P, area, nu=0.3):
     nu : float
         Poisson's ratio (:math:`E^*/G = 2/(1-\nu)`).
     """
-    P = np.asarray(P, dtype=float)
-    area = np.asarray(area, dtype=float)
+    P, area = _pair(P, "P", area, "area")
+    if np.any(area < 0):
+        raise ValueError("area (real contact area) must be >= 0")
     nu = check_poisson(nu)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(area > 0, P * (1.0 - nu) / (2.0 * np.pi * np.where(area > 0, area, 1.0)),
-                        np.nan)
+    with np.errstate(all="ignore"):  # a finite load over a vanishing area: infinite pressure
+        return np.where(area > 0, P * (1.0 - nu) / (2.0 * np.pi * np.where(area > 0, area, 1.0)), np.nan)
 
 
 def friction_coefficient(F, P):
     r"""Friction coefficient :math:`\mu = F/P` (Eq 1); NaN where :math:`P \le 0` (undefined).
 
     Under zero or tensile load an adhesive contact still has a finite friction force, so
-    :math:`\mu` is infinite or meaningless there; NaN marks it.
+    :math:`\mu` is infinite or meaningless there; NaN marks it.  Under a vanishing positive
+    load :math:`F/P` overflows to infinity, its true value.
     """
-    F = np.asarray(F, dtype=float)
-    P = np.asarray(P, dtype=float)
-    with np.errstate(over="ignore"):  # a finite friction over a vanishing load: mu = inf
+    F, P = _pair(F, "F", P, "P")
+    with np.errstate(all="ignore"):  # a finite friction over a vanishing load: mu = inf
         return np.where(P > 0, F / np.where(P > 0, P, 1.0), np.nan)
+
+
+def _pair(x, x_name, y, y_name):
+    """Two real finite arrays (may be empty) of shapes that broadcast together."""
+    x, y = as_float_array(x, x_name, allow_empty=True), as_float_array(y, y_name, allow_empty=True)
+    try:
+        np.broadcast_shapes(x.shape, y.shape)
+    except ValueError:
+        raise ValueError(f"{x_name} and {y_name} must have shapes that broadcast together, got {x.shape} and "
+                         f"{y.shape}") from None
+    return x, y

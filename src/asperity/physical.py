@@ -52,7 +52,14 @@ import math
 import numpy as np
 
 from . import groups
-from ._validation import as_float_array, check_bool, check_nonnegative, check_positive, check_scalar_positive
+from ._validation import (
+    check_1d,
+    check_bool,
+    check_finite_result,
+    check_nonnegative,
+    check_positive,
+    check_scalar_positive,
+)
 from .curves import CurveResult, Model
 from .friction_stress import ConstantShear, FrictionLaw, HurtadoKim
 from .heights import GAUSSIAN, HeightDistribution
@@ -144,7 +151,7 @@ class PhysicalContact:
 
     def __init__(self, material: Material | str, surface: Surface, *, h=None, friction=None,
                  adhesion: bool = True, heights: HeightDistribution = GAUSSIAN):
-        self.material = as_material(material)
+        self.material = as_material(material, "material")
         if not isinstance(surface, Surface):
             raise TypeError(f"surface must be an asperity.surface.Surface, got {type(surface).__name__}")
         self.surface = surface
@@ -324,8 +331,9 @@ class PhysicalContact:
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:
         """Forces, mu, area, pressure and contacts at separations ``d`` (m, or a pint length)."""
-        d = as_float_array(to_si(d, "m", "d"), "d").ravel()
-        d_bar = d / self.surface.sigma_s
+        d = check_1d(to_si(d, "m", "d"), "d")
+        with np.errstate(all="ignore"):
+            d_bar = d / self.surface.sigma_s
         if np.any((d_bar < D_MIN) | (d_bar > D_MAX)):
             raise ValueError(f"d (separation) must lie in [{D_MIN * self.surface.sigma_s:g}, "
                              f"{D_MAX * self.surface.sigma_s:g}] m ({D_MIN:g} to {D_MAX:g} sigma_s)")
@@ -340,7 +348,7 @@ class PhysicalContact:
             If a load is not positive without adhesion, or more tensile than the pull-off
             force with adhesion (the message gives the limit in newtons).
         """
-        P = as_float_array(to_si(P, "N", "P"), "P").ravel()
+        P = check_1d(to_si(P, "N", "P"), "P")
         try:
             curve = self.model.load_curve(P / self.force_scale)
         except ValueError as err:
@@ -412,4 +420,6 @@ def work_of_adhesion_from_gamma(gamma, E_star, b):
     gamma = check_nonnegative(to_si(gamma, "", "gamma"), "gamma")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
     b = check_positive(to_si(b, "m", "b"), "b")
-    return _out(gamma * E_star * b)
+    with np.errstate(all="ignore"):
+        w = gamma * E_star * b
+    return _out(check_finite_result(w, "w", gamma=gamma, E_star=E_star, b=b))

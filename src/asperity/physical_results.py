@@ -93,6 +93,8 @@ def warn_area_fraction(fraction, *, stacklevel: int = 1) -> None:
     """
     if isinstance(fraction, bool) or not isinstance(fraction, int | float | np.integer | np.floating):
         raise TypeError(f"fraction must be a real number, got {type(fraction).__name__} {fraction!r}")
+    if not (fraction >= 0 or math.isnan(fraction)) or math.isinf(fraction):
+        raise ValueError(f"fraction must be finite and >= 0 (or NaN), got {fraction!r}")
     if isinstance(stacklevel, bool) or not isinstance(stacklevel, int):
         raise TypeError(f"stacklevel must be an integer, got {type(stacklevel).__name__} {stacklevel!r}")
     message = _area_fraction_message(float(fraction))

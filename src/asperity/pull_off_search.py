@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._validation import check_1d
 from .tabulation import Tabulation, check_tabulation
 
 __all__ = ["PullOff", "find_pull_off"]
@@ -93,7 +94,11 @@ def find_pull_off(tab: Tabulation, d_lo, d_hi, grid=None, P=None) -> PullOff:
     """
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi)
     if (grid is None) != (P is None):
-        raise ValueError("give both grid and P, or neither")
+        raise ValueError(f"give both grid and P, or neither (got {'grid' if P is None else 'P'} alone)")
+    if grid is not None:
+        grid, P = check_1d(grid, "grid"), check_1d(P, "P")
+        if not (grid.size == P.size >= 2 and np.all(np.diff(grid) > 0)):
+            raise ValueError("grid must be increasing, with P of its length (at least 2 points)")
     if not tab.params.adhesive:
         return PullOff(0.0, math.nan, False)
     if grid is None:

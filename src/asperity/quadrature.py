@@ -19,15 +19,25 @@ import math
 
 import numpy as np
 
+from ._validation import check_1d, check_integer, check_scalar_real
+
 __all__ = ["gauss_legendre", "panel_edges", "composite_nodes"]
 
 NODES_PER_PANEL = 16
 GROWTH = 3.0
 
 
-@functools.lru_cache(maxsize=8)
+#: Most nodes per panel, panels and nodes in total that the helpers accept (memory bounds).
+MAX_NODES_PER_PANEL, MAX_PANELS = 1000, 10**6
+
+
 def gauss_legendre(n: int):
-    """Gauss-Legendre nodes and weights on [0, 1]."""
+    """Gauss-Legendre nodes and weights on [0, 1] (``n`` nodes, 1 <= n <= 1000); cached."""
+    return _gauss_legendre(check_integer(n, "n", 1, MAX_NODES_PER_PANEL))
+
+
+@functools.lru_cache(maxsize=8)
+def _gauss_legendre(n: int):
     x, w = np.polynomial.legendre.leggauss(n)
     return 0.5 * (x + 1.0), 0.5 * w
 
@@ -40,7 +50,24 @@ def panel_edges(start, stop, first, breakpoints=(), lo_clip=None, growth=GROWTH)
     Each breakpoint inside becomes a boundary.  With ``lo_clip`` above ``start``, the
     edges below it are dropped and ``lo_clip`` becomes the first edge, without ever
     building the panels in between.
+
+    ``start < stop`` and ``0 < first``, finite, with ``stop - start`` at most
+    :data:`MAX_PANELS`; ``growth > 1``; ``breakpoints`` finite; ``lo_clip`` None or finite.
     """
+    start, stop, first = (check_scalar_real(x, n) for x, n in ((start, "start"), (stop, "stop"), (first, "first")))
+    if not start < stop:
+        raise ValueError(f"start must be < stop, got {start!r} and {stop!r}")
+    if not stop - start <= MAX_PANELS:
+        raise ValueError(f"stop - start must be <= {MAX_PANELS} (unit panels), got {stop - start:g}")
+    if not first > 0:
+        raise ValueError(f"first (width of the first panel) must be > 0, got {first!r}")
+    growth = check_scalar_real(growth, "growth")
+    if not growth > 1:
+        raise ValueError(f"growth must be > 1, got {growth!r}")
+    breakpoints = check_1d(breakpoints, "breakpoints", allow_empty=True)
+    lo_clip = None if lo_clip is None else check_scalar_real(lo_clip, "lo_clip")
+    if lo_clip is not None and not lo_clip < stop:
+        raise ValueError(f"lo_clip must be < stop, got {lo_clip!r} and {stop!r}")
     graded = [start]
     width, x = first, start
     while width < 1.0 and x < stop:
@@ -51,7 +78,8 @@ def panel_edges(start, stop, first, breakpoints=(), lo_clip=None, growth=GROWTH)
     if lo_clip is not None and lo_clip > start:
         first_unit = max(first_unit, math.floor(lo_clip))
     unit = np.arange(first_unit, math.ceil(stop) + 1, dtype=float)
-    edges = np.concatenate([graded, unit, [p for p in breakpoints if start < p < unit[-1]]])
+    end = unit[-1] if unit.size else graded[-1]
+    edges = np.concatenate([graded, unit, [p for p in breakpoints if start < p < end]])
     edges = np.unique(edges)
     if lo_clip is not None and lo_clip > start:
         edges = np.concatenate([[lo_clip], edges[edges > lo_clip]])
@@ -66,7 +94,15 @@ def composite_nodes(edges, n=NODES_PER_PANEL):
     The quartic substitution makes the endpoint behaviours met here analytic in s:
     u^(3/2) (Hertz), a square root (Maugis-Dugdale branch end) and the fourth root at
     lambda = lambda_c, where the branch end changes kind.
+
+    ``edges`` is increasing and finite (at least 2), ``n`` nodes per panel (1..1000), at
+    most :data:`MAX_PANELS` panels.
     """
+    edges = check_1d(edges, "edges")
+    if not (edges.size >= 2 and np.all(np.diff(edges) > 0)):
+        raise ValueError(f"edges must be increasing, with at least 2 values, got {edges.size} values")
+    if edges.size - 1 > MAX_PANELS:
+        raise ValueError(f"edges must hold at most {MAX_PANELS} panels, got {edges.size - 1}")
     x, w = gauss_legendre(n)
     a, b = edges[:-1], edges[1:]
     nodes = (a[:, None] + (b - a)[:, None] * x[None, :])

@@ -177,6 +177,8 @@ def quantity(name: str) -> Quantity:
     ValueError
         For an unknown name; the message lists the known ones.
     """
+    if not isinstance(name, str):
+        raise TypeError(f"name must be a string, got {type(name).__name__} {name!r}")
     for registry in (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS):
         if name in registry:
             return registry[name]

@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_nonnegative, check_positive
+from ._validation import check_finite_result, check_nonnegative, check_positive, check_scalar_positive
 from .maugis_dugdale import md_lambda
 from .units import to_si
 
@@ -90,7 +90,9 @@ def tabor_parameter(R, w, E_star, z0):
     w = check_positive(to_si(w, "J/m^2", "w"), "w")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
     z0 = check_positive(to_si(z0, "m", "z0"), "z0")
-    return _out(np.cbrt(R * w**2 / (E_star**2 * z0**3)))
+    with np.errstate(all="ignore"):
+        mu = np.cbrt(R * w**2 / (E_star**2 * z0**3))
+    return _out(check_finite_result(mu, "the Tabor parameter", R=R, w=w, E_star=E_star, z0=z0))
 
 
 def maugis_parameter(R, w, E_star, sigma0):
@@ -165,8 +167,8 @@ def adhesion_regime(lam, *, dmt_below: float = 0.1, jkr_above: float = 5.0):
        spheres", J. Colloid Interface Sci. 192 (1997) 326-333.
     """
     lam = check_nonnegative(lam, "lam")
-    lo = float(check_positive(dmt_below, "dmt_below"))
-    hi = float(check_positive(jkr_above, "jkr_above"))
+    lo = check_scalar_positive(dmt_below, "dmt_below")
+    hi = check_scalar_positive(jkr_above, "jkr_above")
     if not lo < hi:
         raise ValueError(f"dmt_below must be < jkr_above, got {lo:g} and {hi:g}")
     names = np.where(lam < lo, "DMT", np.where(lam > hi, "JKR", "Maugis-Dugdale"))
@@ -218,4 +220,6 @@ def fuller_tabor_parameter(sigma, R, w, E_star):
     R = check_positive(to_si(R, "m", "R"), "R")
     w = check_positive(to_si(w, "J/m^2", "w"), "w")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
-    return _out(E_star * sigma**1.5 / (np.sqrt(R) * w))
+    with np.errstate(all="ignore"):
+        theta = E_star * sigma**1.5 / (np.sqrt(R) * w)
+    return _out(check_finite_result(theta, "the Fuller-Tabor parameter", sigma=sigma, R=R, w=w, E_star=E_star))

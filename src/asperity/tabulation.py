@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, scalar
-from .asperity_law import ContactLaw, ModelParameters, check_law
+from ._validation import as_float_array, check_bool, check_scalar_real, check_text
+from .asperity_law import U_END_LIMIT, ContactLaw, ModelParameters, check_law, check_parameters
 from .heights import GAUSSIAN, HeightDistribution
 from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
 
@@ -43,9 +43,13 @@ def check_separation(d, name="d", d_max=D_MAX):
     ValueError
         If ``d`` is not real and finite or lies outside the range, naming ``name``.
     """
+    name = check_text(name, "name")
+    d_max = check_scalar_real(d_max, "d_max")
+    if not D_MIN < d_max <= D_MAX + U_END_LIMIT:
+        raise ValueError(f"d_max must lie in ({D_MIN:g}, {D_MAX + U_END_LIMIT:g}], got {d_max!r}")
     d = as_float_array(d, name)
     if np.any((d < D_MIN) | (d > d_max)):
-        raise ValueError(f"{name} (separation d/sigma) must lie in [{D_MIN:g}, {d_max:.6g}], "
+        raise ValueError(f"{name} (separation d/sigma) must lie in [{D_MIN:g}, d_max = {d_max:.6g}], "
                          f"got values from {d.min():g} to {d.max():g}")
     return d
 
@@ -88,10 +92,16 @@ class Tabulation:
                  heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None):
         if not isinstance(heights, HeightDistribution):
             raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
-        self.params = params
+        self.params = check_parameters(params)
         self.heights = heights
         self.law = check_law(law, params)
-        self.d_min, self.d_max = float(d_min), float(d_max)
+        self.d_min, self.d_max = (check_scalar_real(x, n) for x, n in ((d_min, "d_min"), (d_max, "d_max")))
+        top = D_MAX - self.law.u_end
+        for x, n in ((self.d_min, "d_min"), (self.d_max, "d_max")):
+            if not D_MIN <= x <= top:
+                raise ValueError(f"{n} (separation d/sigma) must lie in [{D_MIN:g}, {top:.6g}], got {x!r}")
+        if not self.d_min <= self.d_max:
+            raise ValueError(f"d_min must be <= d_max, got {self.d_min!r} and {self.d_max!r}")
         law = self.law
         z_top = heights.z_top
         # For a separation d the integrand peaks at u* = max(u_end, -d) and is negligible
@@ -194,11 +204,18 @@ def check_tabulation(tab, d_lo, d_hi, *, names=("d_lo", "d_hi"), covered=True) -
     """
     if not isinstance(tab, Tabulation):
         raise ValueError(f"tab must be an asperity.tabulation.Tabulation, got {type(tab).__name__}")
-    d_lo, d_hi = (float(scalar(as_float_array(x, n), n)) for x, n in zip((d_lo, d_hi), names, strict=True))
+    if not (isinstance(names, tuple | list) and len(names) == 2 and all(isinstance(n, str) for n in names)):
+        raise TypeError(f"names must be two parameter names (str), got {names!r}")
+    covered = check_bool(covered, "covered")
+    d_lo, d_hi = (check_scalar_real(x, n) for x, n in zip((d_lo, d_hi), names, strict=True))
+    top = D_MAX - tab.law.u_end
+    for x, n in zip((d_lo, d_hi), names, strict=True):
+        if not D_MIN <= x <= top:
+            raise ValueError(f"{n} (separation d/sigma) must lie in [{D_MIN:g}, {top:.6g}], got {x!r}")
     if not d_lo < d_hi:
         raise ValueError(f"{names[0]} must be < {names[1]}, got {d_lo!r} and {d_hi!r}")
     if covered and not tab.covers(d_lo, d_hi):
-        raise ValueError(f"the tabulation serves d/sigma in [{tab.d_min:g}, {tab.d_max:g}], not "
-                         f"[{d_lo:g}, {d_hi:g}]: use tab.extended({d_lo:g}, {d_hi:g})")
+        raise ValueError(f"{names[0]}, {names[1]} = {d_lo:g}, {d_hi:g} lie outside the separations the tabulation "
+                         f"serves, [{tab.d_min:g}, {tab.d_max:g}]: use tab.extended({d_lo:g}, {d_hi:g})")
     return d_lo, d_hi
 

@@ -54,6 +54,10 @@ def _convert(quantity, unit: str, name: str):
     try:
         converted = quantity.to(unit or "dimensionless")
     except Exception as err:  # pint.DimensionalityError, UndefinedUnitError, ...
+        try:
+            unit_registry().parse_units(unit or "dimensionless")
+        except Exception:  # the target unit itself is not a unit: the caller's mistake
+            raise ValueError(f"unit {unit!r} is not a unit pint knows (for {name})") from None
         raise ValueError(f"{name} must have units compatible with {_unit_label(unit)}, got "
                          f"{quantity!s} ({type(err).__name__}: {err})") from None
     magnitude = converted.magnitude
@@ -92,6 +96,7 @@ def to_si(value, unit: str, name: str):
     >>> to_si(2e-9, "m", "sigma_s")
     2e-09
     """
+    _check_labels(unit, name)
     if isinstance(value, str):
         return parse_quantity(value, unit, name)
     if is_quantity(value):
@@ -99,6 +104,13 @@ def to_si(value, unit: str, name: str):
     if isinstance(value, list | tuple) and any(is_quantity(v) or isinstance(v, str) for v in value):
         return np.array([to_si(v, unit, name) for v in value], dtype=float)
     return value
+
+
+def _check_labels(unit, name) -> None:
+    """``unit`` and ``name`` are strings (a unit in pint syntax, a parameter name)."""
+    for value, label in ((unit, "unit"), (name, "name")):
+        if not isinstance(value, str):
+            raise TypeError(f"{label} must be a string, got {type(value).__name__} {value!r}")
 
 
 def _plain_number(text: str):
@@ -142,6 +154,7 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
     >>> parse_quantity("2nm", "m", "sigma_s")
     2e-09
     """
+    _check_labels(unit, name)
     if not isinstance(text, str):
         raise ValueError(f"{name} must be a string such as '2nm', got {text!r}")
     stripped = text.strip()

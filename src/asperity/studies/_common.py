@@ -94,6 +94,13 @@ class FigureData:
         raise KeyError(key)
 
 
+def check_data(data, figure: int) -> FigureData:
+    """``data`` if it is a :class:`FigureData`; otherwise a TypeError naming ``data`` and the figure."""
+    if not isinstance(data, FigureData):
+        raise TypeError(f"data must be the FigureData of fig{figure}_data(), got {type(data).__name__}")
+    return data
+
+
 def key_of(alpha: float, beta: float, gamma: float) -> str:
     """Plain-text curve id, e.g. ``alpha=0.01 beta=1000 gamma=0.001``."""
     return f"alpha={alpha:g} beta={beta:g} gamma={gamma:g}"

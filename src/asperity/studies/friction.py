@@ -15,6 +15,7 @@ from ._common import (
     Check,
     FigureData,
     adhesion_legend,
+    check_data,
     drawing,
     load_series,
     log_decades_limits,
@@ -68,6 +69,7 @@ def fig3_draw(data: FigureData):
 
 
 def fig3_checks(data: FigureData) -> list[Check]:
+    data = check_data(data, 3)
     amu = np.array([s.column("alpha_mu") for s in data.series])  # rows: beta ascending
     x = data.series[0].column("P_over_alpha")
     low, high = amu[:, 0], amu[:, -1]
@@ -158,6 +160,7 @@ def _ratio_to(series, base) -> np.ndarray:
 
 
 def fig4_checks(data: FigureData) -> list[Check]:
+    data = check_data(data, 4)
     base = [s for s in data.series if not s.adhesion][0]
     adh = [s for s in data.series if s.adhesion]
     dev = {s.alpha: float(np.max(np.abs(_ratio_to(s, base) - 1.0))) for s in adh}
@@ -235,6 +238,7 @@ def fig5_draw(data: FigureData):
 
 
 def fig5_checks(data: FigureData) -> list[Check]:
+    data = check_data(data, 5)
     adh = {s.beta: s for s in data.series if s.adhesion}
     dry = {s.beta: s for s in data.series if not s.adhesion}
     betas = sorted(adh)
@@ -312,6 +316,7 @@ def fig6_draw(data: FigureData):
 
 
 def fig6_checks(data: FigureData) -> list[Check]:
+    data = check_data(data, 6)
     adh = sorted((s for s in data.series if s.adhesion), key=lambda s: s.gamma)
     base = [s for s in data.series if not s.adhesion][0]
     mu = np.array([base.column("mu")] + [s.column("mu") for s in adh])  # gamma ascending, 0 first

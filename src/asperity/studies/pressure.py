@@ -15,6 +15,7 @@ from ._common import (
     Check,
     FigureData,
     adhesion_legend,
+    check_data,
     drawing,
     load_series,
     log_decades_limits,
@@ -62,6 +63,7 @@ def fig9_draw(data: FigureData):
 
 
 def fig9_checks(data: FigureData) -> list[Check]:
+    data = check_data(data, 9)
     adh = {(s.alpha, s.beta): s.column("pressure") for s in data.series if s.adhesion}
     dry = {(s.alpha, s.beta): s.column("pressure") for s in data.series if not s.adhesion}
     lowers = {case: bool(np.all(adh[case] < dry[case])) for case in CASES}

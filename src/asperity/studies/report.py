@@ -16,6 +16,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from .._atomic import atomic_write
+from .._validation import check_callable, check_path
 from .._version import __version__
 from ._common import CSV_COLUMNS, DPI, FIGSIZE, H_OVER_B, NU, csv_rows, save_figure, write_csv
 from .figures import FIGURES
@@ -224,8 +225,10 @@ def reproduce(out_dir, progress: Callable[[str], object] | None = None) -> dict:
         ``rows`` (dicts with the columns of ``table1.csv``); ``index``: the HTML path;
         ``checks_passed``, ``checks_total``; ``seconds``: the wall time.
     """
+    out = Path(check_path(out_dir, "out_dir", directory=True))
+    if progress is not None:
+        check_callable(progress, "progress")
     t_start = time.perf_counter()
-    out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     say = progress if progress is not None else (lambda message: None)
     files: list[str] = []

@@ -15,6 +15,7 @@ from ._common import (
     COLOURS,
     Check,
     FigureData,
+    check_data,
     drawing,
     model,
     new_figure,
@@ -128,6 +129,7 @@ def _decades(num, den):
 
 
 def fig7_checks(data: FigureData) -> list[Check]:
+    data = check_data(data, 7)
     po = data.extra["pull_off"]
     tensile = [(s.alpha, s.beta) for s in data.series if np.any(s.curve.P < 0)]
     only = tensile == [(0.005, 1e3)]
@@ -207,6 +209,7 @@ def fig8_draw(data: FigureData):
 
 
 def fig8_checks(data: FigureData) -> list[Check]:
+    data = check_data(data, 8)
     sel = D <= 3.0
     b3, b4, b5 = (data.find(f"alpha=0.01 beta={b:g} gamma=0.001").curve.F for b in (1e3, 1e4, 1e5))
     r = np.r_[_decades(b4, b3)[sel], _decades(b5, b4)[sel]]

@@ -2,6 +2,9 @@ r"""Table 1: the dimensionless pull-off force :math:`|P|/NGb^2` for nine paramet
 
 from __future__ import annotations
 
+import numpy as np
+
+from .._validation import check_finite_result, check_path, check_scalar_positive
 from ..groups import load_scale
 from ._common import model, write_csv
 
@@ -35,7 +38,16 @@ def table1_rows() -> list[dict]:
 
 
 def write_table1_csv(path, rows=None) -> list[dict]:
-    """Write ``table1.csv`` (columns :data:`TABLE1_COLUMNS`); return the rows written."""
+    """Write ``table1.csv`` (columns :data:`TABLE1_COLUMNS`); return the rows written.
+
+    ``path`` is a file name; ``rows`` (default: :func:`table1_rows`) a list of dicts with
+    the keys :data:`TABLE1_COLUMNS`.
+    """
+    path = check_path(path, "path")
+    if rows is not None and not (isinstance(rows, list | tuple) and all(
+            isinstance(r, dict) and set(TABLE1_COLUMNS) <= set(r) for r in rows)):
+        raise TypeError(f"rows must be a list of dicts with the keys {', '.join(TABLE1_COLUMNS)}, got "
+                        f"{type(rows).__name__}")
     rows = table1_rows() if rows is None else rows
     write_csv(path, rows, TABLE1_COLUMNS)
     return rows
@@ -49,6 +61,8 @@ def printed_load_scale_factor(alpha, beta, gamma, nu=0.3) -> float:
     :math:`(1-\nu)\alpha/(2\pi\beta\gamma)` multiplies the whole force curve by their ratio,
     :math:`1/\alpha`, leaving the separation of the pull-off unchanged.
     """
+    alpha, beta, gamma = (check_scalar_positive(x, n) for x, n in ((alpha, "alpha"), (beta, "beta"), (gamma, "gamma")))
     derived = load_scale(alpha, beta, gamma, nu, form="derived")
     printed = load_scale(alpha, beta, gamma, nu, form="printed")
-    return float(derived / printed)
+    with np.errstate(all="ignore"):
+        return float(check_finite_result(derived / printed, "the factor", alpha=alpha, beta=beta, gamma=gamma))

@@ -243,7 +243,7 @@ def _burgers(material, b):
     """Burgers vector [m] from ``b`` or ``material.b``; None if neither is given."""
     if b is None and material is not None:
         if isinstance(material, str):
-            material = as_material(material)
+            material = as_material(material, "material")
         if not hasattr(material, "b"):
             raise TypeError(f"material {material!r} has no Burgers vector attribute 'b'")
         b = material.b

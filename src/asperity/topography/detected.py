@@ -32,7 +32,7 @@ import math
 
 import numpy as np
 
-from .._validation import as_float_array, check_positive
+from .._validation import as_float_array, check_finite_result, check_scalar_positive
 from .spectral import NAYAK_SIGMA_S, RICE_SIGMA_P, bandwidth_alpha, summit_sigma
 from .summits import SummitParameters, moments, prepare
 
@@ -124,14 +124,17 @@ def summit_curvatures(h, peak, dx, dy) -> np.ndarray:
         (positive for a cap).
     """
     h = _grid(h, 2)
-    peak = np.asarray(peak, dtype=bool)
+    if not (isinstance(peak, np.ndarray) and peak.dtype == bool):
+        raise TypeError(f"peak must be a boolean array (local_maxima_2d(h)), got {type(peak).__name__}")
     if peak.shape != (h.shape[0] - 2, h.shape[1] - 2):
         raise ValueError(f"peak must have shape {(h.shape[0] - 2, h.shape[1] - 2)}, got {peak.shape}")
-    dx, dy = float(check_positive(dx, "dx")), float(check_positive(dy, "dy"))
+    dx, dy = np.float64(check_scalar_positive(dx, "dx")), np.float64(check_scalar_positive(dy, "dy"))
     c = h[1:-1, 1:-1]
-    hxx = (h[2:, 1:-1] - 2 * c + h[:-2, 1:-1]) / dx**2
-    hyy = (h[1:-1, 2:] - 2 * c + h[1:-1, :-2]) / dy**2
-    return -(hxx + hyy)[peak] / 2
+    with np.errstate(all="ignore"):
+        hxx = (h[2:, 1:-1] - 2 * c + h[:-2, 1:-1]) / dx**2
+        hyy = (h[1:-1, 2:] - 2 * c + h[1:-1, :-2]) / dy**2
+        curvature = -(hxx + hyy)[peak] / 2
+    return check_finite_result(curvature, "the summit curvature", dx=dx, dy=dy)
 
 
 def detected_summits(topography) -> SummitParameters:

@@ -119,6 +119,8 @@ def _file_name(path) -> str:
     if not isinstance(path, str | os.PathLike):
         raise TypeError(f"path must be a str or os.PathLike naming a file, got {type(path).__name__} {path!r}")
     name = os.fsdecode(os.fspath(path))
+    if name == "":
+        raise ValueError("path must not be empty")
     if os.path.isdir(name):
         raise ValueError(f"{name}: is a directory, not a topography file")
     if not os.path.exists(name):
@@ -202,7 +204,8 @@ def _channel(name, reader, channel_index):
     if isinstance(channel_index, bool) or not isinstance(channel_index, int | np.integer):
         raise ValueError(f"{name}: channel_index must be an integer, got {channel_index!r}")
     if not 0 <= channel_index < len(reader.channels):
-        raise ValueError(f"{name}: no channel {channel_index}; the file has {len(reader.channels)} channel(s): "
+        raise ValueError(f"{name}: no channel {channel_index} (channel_index); the file has {len(reader.channels)} "
+                         "channel(s): "
                          + ", ".join(repr(c.name) for c in reader.channels))
     return reader.channels[channel_index]
 
@@ -256,7 +259,11 @@ def _sizes_in_unit(name, physical_sizes, dim, unit) -> tuple[float, ...]:
     except ValueError:
         raise ValueError(f"{name}: the heights are stored in {unit!r}, not a length unit; physical_sizes "
                          f"cannot be converted to it") from None
-    return tuple(float(s * metres_to_unit) for s in sizes)
+    with np.errstate(all="ignore"):
+        converted = sizes * metres_to_unit
+    if not np.all(np.isfinite(converted)):
+        raise ValueError(f"{name}: {problem}: beyond double precision in {unit!r}")
+    return tuple(float(s) for s in converted)
 
 
 def _finish(topo, name, fill_undefined):

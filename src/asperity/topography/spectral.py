@@ -73,7 +73,7 @@ import math
 
 import numpy as np
 
-from .._validation import check_positive, check_range
+from .._validation import check_finite_result, check_positive, check_range
 from ..surface import NAYAK_SIGMA_S
 from .summits import SummitParameters, moments, prepare
 
@@ -121,7 +121,9 @@ def bandwidth_alpha(m0, m2, m4):
     Nayak (1971); McCool (1986).
     """
     m0, m2, m4 = check_positive(m0, "m0"), check_positive(m2, "m2"), check_positive(m4, "m4")
-    return _out(m0 * m4 / m2**2)
+    with np.errstate(all="ignore"):
+        alpha_n = m0 * m4 / m2**2
+    return _out(check_finite_result(alpha_n, "alpha_N", m0=m0, m2=m2, m4=m4))
 
 
 def summit_density(m2, m4):
@@ -146,7 +148,9 @@ def summit_density(m2, m4):
     Nayak (1971); McCool (1986).
     """
     m2, m4 = check_positive(m2, "m2"), check_positive(m4, "m4")
-    return _out(m4 / (6 * math.pi * math.sqrt(3) * m2))
+    with np.errstate(all="ignore"):
+        eta = m4 / (6 * math.pi * math.sqrt(3) * m2)
+    return _out(check_finite_result(eta, "eta", m2=m2, m4=m4))
 
 
 def summit_radius(m4):

@@ -238,6 +238,9 @@ def moments(topography):
     Nayak (1971), J. Lubr. Technol. 93, 398-407; Longuet-Higgins (1957), Phil. Trans.
     R. Soc. A 249, 321-387 (see :mod:`asperity.topography.spectral`).
     """
+    if not all(hasattr(topography, attr) for attr in ("heights", "dim", "nb_grid_pts", "detrend")):
+        raise TypeError(f"topography must be a SurfaceTopography topography or line scan (from prepare()), "
+                        f"got {type(topography).__name__}")
     if topography.dim == 1:
         return (float(topography.Rq()) ** 2, float(topography.Rdq()) ** 2, float(topography.Rddq()) ** 2,
                 None)
