@@ -17,8 +17,10 @@ numbers, arbitrary floats and integers) and asserts the contract:
 * never another exception (AttributeError, IndexError, a raw NumPy or pint error) and
   never a warning (pytest turns warnings into errors).
 
-``ASPERITY_FUZZ_EXHAUSTIVE=1`` instead tries every (callable, parameter, listed bad value)
-combination once: slow, for checking a change by hand.
+Four examples per callable by default (about 500 calls, well under a minute);
+``ASPERITY_FUZZ_EXAMPLES=N`` draws N, and ``ASPERITY_FUZZ_EXHAUSTIVE=1`` tries every
+(callable, parameter, listed bad value) combination once (about 4000 calls): slower, for
+checking a change by hand.
 """
 
 from __future__ import annotations
@@ -452,6 +454,10 @@ def check_contract(target: str, func, kwargs: dict, name: str, bad) -> None:
 
 # -- the tests ------------------------------------------------------------------------------------
 
+#: Examples per test (ASPERITY_FUZZ_EXAMPLES overrides).
+EXAMPLES = int(os.environ.get("ASPERITY_FUZZ_EXAMPLES", 4))
+
+
 @pytest.fixture(scope="module")
 def tmp(tmp_path_factory):
     return str(tmp_path_factory.mktemp("fuzz"))
@@ -485,8 +491,8 @@ TARGETS = sorted({*_valid_table("/nonexistent")} - {"asperity.studies.report.rep
 
 
 @pytest.mark.parametrize("target", TARGETS)
-@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture,
-                                                               HealthCheck.too_slow])
+@settings(max_examples=EXAMPLES, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(data=st.data())
 def test_bad_values_are_named_errors_or_finite_results(tmp, target, data):
     func, valid, params = _target(tmp, target)
