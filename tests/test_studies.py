@@ -179,3 +179,61 @@ def test_studies_import_without_matplotlib():
     code = ("import sys, asperity, asperity.studies\n"
             "assert 'matplotlib' not in sys.modules, 'matplotlib imported'\n")
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+# -- legends name only what can be seen; axes fit the data -------------------------------------------
+
+def _legend_texts(fig):
+    return [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+
+
+def test_hidden_curves_share_the_visible_curves_entry():
+    pytest.importorskip("matplotlib")
+    from asperity.studies.figures import FIGURES
+
+    spec = FIGURES[4]
+    texts = _legend_texts(spec.draw(spec.data()))
+    # alpha = 0.06 lies under alpha = 0.1 (within half a line width): one entry for both.
+    assert "α = 0.1; also α = 0.06" in texts and "α = 0.06" not in texts
+
+
+def test_visible_legend_entries():
+    pytest.importorskip("matplotlib")
+    import numpy as np
+
+    from asperity.studies._common import new_figure, visible_legend_entries
+
+    fig, ax = new_figure()
+    x = np.geomspace(1, 100, 50)
+    ax.loglog(x, x, color="C0", label="under")
+    ax.loglog(x, x * 1.001, color="C1", label="over")          # hides "under"
+    ax.loglog(x, 2 * x, color="C2", label="apart")
+    ax.loglog(x, 2 * x, color="C3", ls="--", label="dashed")   # dashed: "apart" shows in its gaps
+    ax.loglog([], [], color="C4", label="empty")                # nothing drawn: no entry
+    ax.set_ylim(0.5, 300)
+    _, labels = visible_legend_entries(ax)
+    assert labels == ["over; also under", "apart", "dashed"]
+
+
+@pytest.mark.parametrize("n, values", [(7, lambda s: abs(s.curve.P)), (8, lambda s: s.curve.F)])
+def test_separation_figures_fit_their_data(n, values):
+    pytest.importorskip("matplotlib")
+    import numpy as np
+
+    from asperity.studies.figures import FIGURES
+
+    spec = FIGURES[n]
+    data = spec.data()
+    lo, hi = spec.draw(data).axes[0].get_ylim()
+    v = np.concatenate([values(s) for s in data.series])
+    v = v[v > 0]
+    assert lo <= v.min() and hi >= v.max()
+    assert np.log10(v.min() / lo) < 0.5 and np.log10(hi / v.max()) < 0.5  # within half a decade
+
+
+def test_fig7_legend_entries_are_drawn():
+    pytest.importorskip("matplotlib")
+    from asperity.studies.figures import FIGURES
+
+    texts = _legend_texts(FIGURES[7].draw(FIGURES[7].data()))
+    assert texts[-2:] == [r"tensile part ($\bar P < 0$): $-\bar P$ plotted", "pull-off force"]

@@ -50,3 +50,56 @@ def test_failing_plot_keeps_an_existing_figure(capsys, tmp_path, monkeypatch):
     code, stdout, err = run(capsys, "load", *MODEL, "--P", "1:1e3:5", "--plot", str(fig))
     assert one_line_error(code, err, "cannot write plot") and stdout == ""
     assert fig.read_bytes() == b"old figure" and [p.name for p in tmp_path.iterdir()] == ["c.png"]
+
+
+@pytest.fixture
+def drawn(monkeypatch):
+    """The figures ``--plot`` saves, captured as matplotlib objects."""
+    pytest.importorskip("matplotlib")
+    from matplotlib.figure import Figure
+
+    figures = []
+    save = Figure.savefig
+
+    def capture(self, *args, **kwargs):
+        figures.append(self)
+        return save(self, *args, **kwargs)
+
+    monkeypatch.setattr(Figure, "savefig", capture)
+    return figures
+
+
+def _legend(ax):
+    legend = ax.get_legend()
+    return [] if legend is None else [t.get_text() for t in legend.get_texts()]
+
+
+def test_no_legend_without_a_tensile_part(capsys, tmp_path, drawn):
+    code, _, _ = run(capsys, "separation", "--alpha", "0.01", "--beta", "1000", "--d", "0:4:9", "--plot",
+                     str(tmp_path / "f.png"))
+    assert code == 0 and _legend(drawn[0].axes[0]) == []
+
+
+def test_legend_names_only_the_parts_drawn(capsys, tmp_path, drawn):
+    # Adhesive: compressive then tensile.  Only tensile (far out): one entry.
+    run(capsys, "separation", "--alpha", "0.005", "--beta", "1000", "--gamma", "1e-3", "--d", "-1:4:11",
+        "--plot", str(tmp_path / "a.png"))
+    run(capsys, "separation", "--alpha", "0.005", "--beta", "1000", "--gamma", "1e-3", "--d", "3:4:5",
+        "--plot", str(tmp_path / "b.png"))
+    assert _legend(drawn[0].axes[0]) == ["compressive $P$", "tensile $-P$"]
+    assert _legend(drawn[1].axes[0]) == ["tensile $-P$"]
+
+
+def test_physical_axes_fit_the_data(capsys, tmp_path, drawn):
+    code, _, _ = run(capsys, "separation", *AU, "--separation", "-2nm:6nm:9", "--plot", str(tmp_path / "s.png"))
+    ax = drawn[0].axes[0]
+    assert code == 0 and ax.get_xlabel() == "separation $d$ (nm)"
+    lo, hi = ax.get_xlim()
+    assert lo <= -2 and hi >= 6 and hi - lo < 10  # in nm, around the data
+
+
+def test_tensile_loads_plot_on_a_linear_axis(capsys, tmp_path, drawn):
+    code, _, _ = run(capsys, "load", *AU, "--load=-1N,0N,1mN,1N", "--plot", str(tmp_path / "l.png"))
+    mu_ax, area_ax = drawn[0].axes
+    assert code == 0 and area_ax.get_xscale() == "linear" and mu_ax.get_xscale() == "log"
+    assert mu_ax.get_lines()[0].get_xdata().min() > 0  # mu only where it is defined

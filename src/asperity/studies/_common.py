@@ -291,11 +291,74 @@ def paired_curves(ax, data: FigureData, x: str, y: str, colour_of: Callable) -> 
                   label=s.label if s.adhesion else None)
 
 
+def _pixels(line) -> tuple[np.ndarray, np.ndarray]:
+    """A line's points in display coordinates (pixels), finite points only."""
+    x, y = (np.asarray(v, dtype=float) for v in line.get_data())
+    ok = np.isfinite(x) & np.isfinite(y)
+    ok &= (x > 0) if line.axes.get_xscale() == "log" else ok
+    ok &= (y > 0) if line.axes.get_yscale() == "log" else ok
+    xy = line.axes.transData.transform(np.column_stack([x[ok], y[ok]]))
+    order = np.argsort(xy[:, 0])
+    return xy[order, 0], xy[order, 1]
+
+
+def _hides(upper, lower) -> bool:
+    """True if the solid line ``upper``, drawn later in another colour, covers ``lower`` wherever it is drawn.
+
+    Covered means: ``lower`` lies within ``upper``'s x range and within half of ``upper``'s
+    line width (in pixels) of it at every point.  A dashed line never hides anything (the
+    line below shows in its gaps).
+    """
+    from matplotlib.colors import same_color
+
+    if upper.get_linestyle() not in ("-", "solid") or same_color(upper.get_color(), lower.get_color()):
+        return False
+    xu, yu = _pixels(upper)
+    xl, yl = _pixels(lower)
+    if xu.size < 2 or xl.size == 0 or xl.min() < xu.min() - 0.5 or xl.max() > xu.max() + 0.5:
+        return False
+    half_width = 0.5 * upper.get_linewidth() * upper.figure.dpi / 72.0
+    return bool(np.all(np.abs(yl - np.interp(xl, xu, yu)) <= half_width))
+
+
+def visible_legend_entries(ax) -> tuple[list, list[str]]:
+    """The axes' legend handles and labels, without entries for curves nobody can see.
+
+    A labelled curve hidden under a later one (:func:`_hides`: a solid line within half its
+    width everywhere) loses its own entry; its label is added to the visible curve's
+    (``'alpha = 0.1; also alpha = 0.06'``).  Curves without a point on the axes (e.g. an
+    empty tensile part) never appear.  Call it after the axes limits are set.
+    """
+    lines = [ln for ln in ax.get_lines() if np.size(ln.get_xdata()) > 0]
+    labelled = [ln for ln in lines if not ln.get_label().startswith("_")]
+    hidden_by = {}
+    for i, line in enumerate(lines):
+        for later in lines[i + 1:]:
+            if _hides(later, line):
+                hidden_by[line] = later
+                break
+    extra: dict = {}
+    for line in labelled:
+        cover = hidden_by.get(line)
+        while cover is not None and cover in hidden_by:
+            cover = hidden_by[cover]
+        if cover is not None and not cover.get_label().startswith("_"):
+            extra.setdefault(cover, []).append(line.get_label())
+    handles, labels = [], []
+    for line in labelled:
+        if line in hidden_by and any(line.get_label() in v for v in extra.values()):
+            continue
+        also = extra.get(line)
+        handles.append(line)
+        labels.append(line.get_label() + (f"; also {', '.join(also)}" if also else ""))
+    return handles, labels
+
+
 def adhesion_legend(ax, gamma: float, **kwargs) -> None:
     """The curves' legend plus two style entries: solid = with adhesion, dashed = without."""
     from matplotlib.lines import Line2D
 
-    handles, labels = ax.get_legend_handles_labels()
+    handles, labels = visible_legend_entries(ax)
     handles += [Line2D([], [], color="0.3", ls="-"), Line2D([], [], color="0.3", ls="--")]
     labels += ["with adhesion, " + params_text(gamma=gamma), "without adhesion, γ = 0"]
     ax.legend(handles, labels, **kwargs)

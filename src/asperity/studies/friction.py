@@ -23,6 +23,7 @@ from ._common import (
     paired_curves,
     params_text,
     ratio_text,
+    visible_legend_entries,
 )
 
 __all__ = ["fig3_data", "fig3_draw", "fig3_checks", "fig4_data", "fig4_draw", "fig4_checks",
@@ -64,7 +65,7 @@ def fig3_draw(data: FigureData):
     ax.set_ylabel(r"scaled friction coefficient  $\alpha\mu$")
     ax.set_xlim(FIG3_X[0], FIG3_X[-1])
     ax.set_ylim(*log_decades_limits([s.column("alpha_mu") for s in data.series], 0.1))
-    ax.legend(title="γ = 0 (no adhesion)", loc="lower left")
+    ax.legend(*visible_legend_entries(ax), title="γ = 0 (no adhesion)", loc="lower left")
     return fig
 
 
@@ -150,7 +151,7 @@ def _draw_family(data: FigureData, x: str, y: str, xlabel: str, ylabel: str, xs,
     ax.set_ylabel(ylabel)
     ax.set_xlim(xs[0], xs[-1])
     ax.set_ylim(*log_decades_limits([s.column(y) for s in data.series], 0.15))
-    ax.legend(title=legend_title, loc="upper right")
+    ax.legend(*visible_legend_entries(ax), title=legend_title, loc="upper right")
     return fig
 
 

@@ -17,10 +17,12 @@ from ._common import (
     FigureData,
     check_data,
     drawing,
+    log_decades_limits,
     model,
     new_figure,
     params_text,
     separation_series,
+    visible_legend_entries,
 )
 
 __all__ = ["CASES", "fig7_data", "fig7_draw", "fig7_checks", "fig8_data", "fig8_draw", "fig8_checks"]
@@ -86,7 +88,7 @@ def fig7_draw(data: FigureData):
     from matplotlib.lines import Line2D
 
     fig, ax = new_figure()
-    any_tensile = False
+    any_tensile = any_marker = False
     for s, c in zip(data.series, COLOURS, strict=False):
         for d, absP, tensile in _split_by_sign(s.curve.d, s.curve.P):
             any_tensile |= tensile
@@ -95,15 +97,18 @@ def fig7_draw(data: FigureData):
         po = data.extra["pull_off"][(s.alpha, s.beta)]
         if po.exists and D[0] <= po.d <= D[-1]:
             ax.plot([po.d], [po.force], "o", color=c, ms=4.5)
+            any_marker = True
     ax.set_xlabel(r"separation  $d/\sigma$")
     ax.set_ylabel(r"normal force  $\bar P = P/NGb^2$  (tensile: $-\bar P$)")
     ax.set_xlim(D[0], D[-1])
-    ax.set_ylim(1e-4, 1e9)
-    handles, labels = ax.get_legend_handles_labels()
-    if any_tensile:
-        handles += [Line2D([], [], color="0.3", ls="--"),
-                    Line2D([], [], color="0.3", ls="none", marker="o", ms=4.5)]
-        labels += [r"tensile part ($\bar P < 0$): $-\bar P$ plotted", "pull-off force"]
+    ax.set_ylim(*log_decades_limits([np.abs(s.curve.P) for s in data.series], 0.3))
+    handles, labels = visible_legend_entries(ax)
+    if any_tensile:  # legend entries only for what is drawn
+        handles.append(Line2D([], [], color="0.3", ls="--"))
+        labels.append(r"tensile part ($\bar P < 0$): $-\bar P$ plotted")
+    if any_marker:
+        handles.append(Line2D([], [], color="0.3", ls="none", marker="o", ms=4.5))
+        labels.append("pull-off force")
     ax.legend(handles, labels, title=params_text(gamma=GAMMA), loc="upper right")
     return fig
 
@@ -203,8 +208,8 @@ def fig8_draw(data: FigureData):
     ax.set_xlabel(r"separation  $d/\sigma$")
     ax.set_ylabel(r"friction force  $\bar F = F/NGb^2$")
     ax.set_xlim(D[0], D[-1])
-    ax.set_ylim(1e-4, 1e9)
-    ax.legend(title=params_text(gamma=GAMMA), loc="upper right")
+    ax.set_ylim(*log_decades_limits([s.curve.F for s in data.series], 0.3))
+    ax.legend(*visible_legend_entries(ax), title=params_text(gamma=GAMMA), loc="upper right")
     return fig
 
 
