@@ -287,3 +287,9 @@ def test_contact_rejects_wrong_types(surface):
         PhysicalContact("Au", surface, adhesion="no")
     with pytest.raises(TypeError, match="heights must be"):
         PhysicalContact("Au", surface, heights=None)
+
+
+def test_gold_on_gold_pulls_off_harder(surface):
+    # Two bodies halve E* (and G*): a more compliant contact sticks more.  The docs quote the ratio.
+    one, two = PhysicalContact("Au", surface).pull_off(), PhysicalContact("Au/Au", surface).pull_off()
+    assert 1.5 < two.force / one.force < 1.8

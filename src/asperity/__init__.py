@@ -1,8 +1,10 @@
 """asperity: nano- to macro-scale multi-asperity contact, adhesion and friction.
 
 Greenwood-Williamson statistics of asperity heights, the Hurtado-Kim scale-dependent
-friction stress and Maugis-Dugdale adhesion, after Adams, Müftü and Mohd Azhar,
-"A nano-scale multi-asperity contact and friction model".
+friction stress and Maugis-Dugdale adhesion, after G. G. Adams, S. Müftü, N. Mohd Azhar,
+"A Scale-Dependent Model for Multi-Asperity Contact and Friction", J. Tribol. 125(4),
+700-708 (2003), doi:10.1115/1.1572515 (preprint: "A nano-scale multi-asperity contact and
+friction model", whose equation numbers the docstrings use).
 
 Layers, each importing only downward:
 

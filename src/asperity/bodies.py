@@ -17,8 +17,9 @@ of one's own, checked once, here:
   or stress ``sigma0`` replace the body's (or pair's) values.
 
 So ``contact_material("Au")`` is gold on a rigid flat and ``contact_material("Au/Au")``
-two gold bodies: :math:`E^*` halves and the forces change (by about 1.6x for the same
-surface and load).
+two gold bodies: :math:`E^*` and :math:`G^*` halve and the answers change (for
+:math:`\sigma_s` = 2 nm, :math:`R` = 1 µm the pull-off force is 1.6 times larger, the
+friction force under 1 mN 1.2 times smaller).
 
 References
 ----------

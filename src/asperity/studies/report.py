@@ -24,7 +24,8 @@ from .table1 import TABLE1_COLUMNS, printed_load_scale_factor, write_table1_csv
 
 __all__ = ["reproduce", "DECISIONS"]
 
-PAPER = ('Adams, M\u00fcft\u00fc and Mohd Azhar, "A nano-scale multi-asperity contact and friction model"')
+PAPER = ('G. G. Adams, S. M\u00fcft\u00fc, N. Mohd Azhar, "A Scale-Dependent Model for Multi-Asperity Contact '
+         'and Friction", Journal of Tribology 125(4), 700-708 (2003), doi:10.1115/1.1572515')
 
 #: Choices the paper leaves open or states inconsistently (shown in index.html).
 DECISIONS = (
