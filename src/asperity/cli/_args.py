@@ -76,7 +76,8 @@ MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", 
 #: How ``--material`` names a contact (the description of the bodies' group in ``--help``).
 MATERIAL_FORMS = ("--material Au is ONE gold body on a rigid flat (the paper's set-up); --material Au/Au is TWO "
                   "gold bodies (E* and G* halve and the answers change: the pull-off force of a surface with "
-                  "sigma_s = 2nm, R = 1um is 1.6x larger); --material A/B pairs any two table names, as does --material A --material2 B. "
+                  "sigma_s = 2nm, R = 1um is 1.6x larger); --material A/B pairs any two table names, as does "
+                  "--material A --material2 B. "
                   "Without --material, --E and --nu describe a body of your own. --E/--nu (first body), "
                   "--E2/--nu2 (second body), --b, --w, --h or --sigma0 replace the table's values; "
                   "'asperity materials' lists the table.")
