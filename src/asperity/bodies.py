@@ -126,6 +126,10 @@ def contact_material(material=None, *, E=None, nu=None, material2=None, E2=None,
         ``material`` nor ``E`` and ``nu``, a second body given twice, or a pair with
         different Burgers vectors and no ``b``.
 
+    References
+    ----------
+    Johnson, *Contact Mechanics* (1985) §4.2 (two bodies); Adams et al., Eqs (2), (14)-(16).
+
     Examples
     --------
     >>> contact_material("Au", w=0.1).w

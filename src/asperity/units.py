@@ -204,6 +204,10 @@ def format_si(value, unit: str) -> str:
     TypeError
         If ``value`` is not a real number or ``unit`` not a string.
 
+    References
+    ----------
+    BIPM, *The International System of Units (SI)*, 9th ed. (2019), Table 7 (SI prefixes).
+
     Examples
     --------
     >>> format_si(7.8e10, "Pa"), format_si(2.885e-10, "m"), format_si(0.05, "J/m^2")
