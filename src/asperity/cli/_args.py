@@ -196,7 +196,9 @@ def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
     for name in ("tau_f1", "tau_f2", "a1", "a2"):
         f.add_argument(f"--{name.replace('_', '-')}", dest=name, type=float, help=MODEL_PARAMETERS[name].help())
     parser.add_argument("--no-comments", action="store_true",
-                        help="physical results: leave out the '#' lines describing the contact (table, CSV)")
+                        help="a physical result starts with '#' lines stating the contact computed (read the CSV "
+                             "with pandas.read_csv(path, comment='#')); this leaves them out. JSON output is "
+                             "{\"contact\": {...}, \"rows\": [...]} either way")
 
 
 def add_output_arguments(parser: argparse.ArgumentParser, plot: bool = True) -> None:

@@ -24,8 +24,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_model_arguments(parser)
     add_contact_arguments(parser)
     parser.add_argument("--d-max", dest="d_max", type=float, default=None,
-                        help="largest separation d/sigma searched (default: 10 beyond the end of the "
-                             "asperities' stable branch, i.e. 10 without adhesion range)")
+                        help="largest separation d/sigma searched, in units of sigma (sigma_s with a physical "
+                             "contact; default: 10 beyond the end of the asperities' stable branch, i.e. 10 "
+                             "without adhesion range)")
     add_output_arguments(parser, plot=False)
 
 
