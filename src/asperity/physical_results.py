@@ -67,7 +67,7 @@ def _area_fraction_message(fraction: float) -> str | None:
     if fraction > AREA_FRACTION_LIMIT:
         return (f"the real contact area reaches {fraction:.3g} times the nominal area (more than "
                 f"{AREA_FRACTION_LIMIT:.0%}): the GW model's assumption is broken and these numbers are not physical")
-    return (f"the real contact area reaches {fraction:.0%} of the nominal area (more than "
+    return (f"the real contact area reaches {100 * fraction:.3g} % of the nominal area (more than "
             f"{AREA_FRACTION_CAUTION:.0%}): neighbouring asperities interact and the GW model "
             "(independent asperities) is unreliable there")
 
