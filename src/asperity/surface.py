@@ -59,7 +59,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ._validation import check_scalar_positive, check_text
+from ._validation import check_finite_result, check_scalar_positive, check_text
 from .quantities import PHYSICAL_PARAMETERS
 from .units import format_si
 
@@ -208,7 +208,12 @@ def surface_from_groups(alpha, beta, b, eta, area) -> Surface:
     alpha = check_scalar_positive(alpha, "alpha", "")
     beta = check_scalar_positive(beta, "beta", "")
     b = check_scalar_positive(b, "b", "m")
-    return Surface(sigma_s=alpha * beta * b, R=beta * b / alpha, eta=eta, area=area)
+    sigma_s, R = alpha * beta * b, beta * b / alpha
+    check_finite_result([sigma_s, R], "sigma_s or R", alpha=alpha, beta=beta, b=b)
+    if not (sigma_s > 0 and R > 0):
+        raise ValueError(f"alpha = {alpha!r}, beta = {beta!r}, b = {b!r} give sigma_s = {sigma_s!r}, R = {R!r}: "
+                         "below double precision")
+    return Surface(sigma_s=sigma_s, R=R, eta=eta, area=area)
 
 
 def nayak_summit_sigma(rms, alpha_n) -> float:
