@@ -34,6 +34,7 @@ __all__ = [
     "check_path",
     "check_finite_result",
     "check_scalar_real",
+    "check_broadcast",
     "scalar",
 ]
 
@@ -184,6 +185,16 @@ def check_optional_positive(value, name: str, unit: str | None = None, *, allow_
         bound = ">= 0" if allow_zero else "> 0"
         raise ValueError(f"{name} must be {bound}{_unit_text(unit)} or None (missing), got {value!r}")
     return x
+
+
+def check_broadcast(**arrays) -> tuple[int, ...]:
+    """The common shape of arrays that must broadcast together; a ValueError naming them if they do not."""
+    shapes = {name: np.shape(a) for name, a in arrays.items()}
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listed = ", ".join(f"{name} {shape}" for name, shape in shapes.items())
+        raise ValueError(f"{', '.join(shapes)} must have shapes that broadcast together, got {listed}") from None
 
 
 def check_scalar_real(value, name: str) -> float:

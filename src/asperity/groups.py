@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_finite_result, check_poisson, check_positive, check_text
+from ._validation import check_broadcast, check_finite_result, check_poisson, check_positive, check_text
 
 __all__ = [
     "roughness_alpha",
@@ -51,8 +51,9 @@ __all__ = [
 
 def _groups(alpha, beta, gamma):
     """alpha, beta, gamma as validated float arrays (all > 0: these scales need adhesion)."""
-    return (check_positive(alpha, "alpha"), check_positive(beta, "beta"),
-            check_positive(gamma, "gamma"))
+    alpha, beta, gamma = check_positive(alpha, "alpha"), check_positive(beta, "beta"), check_positive(gamma, "gamma")
+    check_broadcast(alpha=alpha, beta=beta, gamma=gamma)
+    return alpha, beta, gamma
 
 
 def roughness_alpha(sigma, R):
@@ -70,6 +71,7 @@ def roughness_alpha(sigma, R):
     Adams et al., Eq (7).
     """
     sigma, R = check_positive(sigma, "sigma"), check_positive(R, "R")
+    check_broadcast(sigma=sigma, R=R)
     with np.errstate(all="ignore"):
         return check_finite_result(np.sqrt(sigma / R), "alpha", sigma=sigma, R=R)
 
@@ -87,6 +89,7 @@ def regime_beta(sigma, R, b):
     Adams et al., Eq (7).
     """
     sigma, R, b = check_positive(sigma, "sigma"), check_positive(R, "R"), check_positive(b, "b")
+    check_broadcast(sigma=sigma, R=R, b=b)
     with np.errstate(all="ignore"):
         return check_finite_result(np.sqrt(sigma * R) / b, "beta", sigma=sigma, R=R, b=b)
 
@@ -108,6 +111,7 @@ def adhesion_gamma(w, E_star, b):
     Adams et al., Eq (16).
     """
     w, E_star, b = check_positive(w, "w"), check_positive(E_star, "E_star"), check_positive(b, "b")
+    check_broadcast(w=w, E_star=E_star, b=b)
     with np.errstate(all="ignore"):
         return check_finite_result(w / (E_star * b), "gamma", w=w, E_star=E_star, b=b)
 
@@ -115,6 +119,7 @@ def adhesion_gamma(w, E_star, b):
 def composite_modulus(E, nu):
     r""":math:`E^* = E/(1-\nu^2)` of an elastic body against a rigid flat."""
     E, nu = check_positive(E, "E"), check_poisson(nu)
+    check_broadcast(E=E, nu=nu)
     with np.errstate(all="ignore"):
         return check_finite_result(E / (1.0 - nu**2), "E*", E=E, nu=nu)
 
@@ -143,6 +148,7 @@ def maugis_lambda(alpha, beta, gamma, h_over_b=1.0):
     """
     alpha, beta, gamma = _groups(alpha, beta, gamma)
     h_over_b = check_positive(h_over_b, "h_over_b")
+    check_broadcast(alpha=alpha, beta=beta, gamma=gamma, h_over_b=h_over_b)
     with np.errstate(all="ignore"):
         lam = np.cbrt(9.0 * beta * gamma**2 / (2.0 * np.pi * alpha)) / h_over_b
     return check_finite_result(lam, "lambda", alpha=alpha, beta=beta, gamma=gamma, h_over_b=h_over_b)
@@ -181,6 +187,7 @@ def load_scale(alpha, beta, gamma, nu=0.3, form: str = "derived"):
     """
     alpha, beta, gamma = _groups(alpha, beta, gamma)
     nu = check_poisson(nu)
+    check_broadcast(alpha=alpha, beta=beta, gamma=gamma, nu=nu)
     if check_text(form, "form") not in ("derived", "printed"):
         raise ValueError(f"form must be 'derived' or 'printed', got {form!r}")
     with np.errstate(all="ignore"):
@@ -204,6 +211,7 @@ def radius_scale(alpha, beta, gamma):
 def sigma_over_b(alpha, beta):
     r""":math:`\sigma/b = \alpha\beta` (Eq 20)."""
     alpha, beta = check_positive(alpha, "alpha"), check_positive(beta, "beta")
+    check_broadcast(alpha=alpha, beta=beta)
     with np.errstate(all="ignore"):
         return check_finite_result(alpha * beta, "sigma/b", alpha=alpha, beta=beta)
 
@@ -211,5 +219,6 @@ def sigma_over_b(alpha, beta):
 def radius_over_b(alpha, beta):
     r""":math:`R/b = \beta/\alpha` (Eq 20)."""
     alpha, beta = check_positive(alpha, "alpha"), check_positive(beta, "beta")
+    check_broadcast(alpha=alpha, beta=beta)
     with np.errstate(all="ignore"):
         return check_finite_result(beta / alpha, "R/b", alpha=alpha, beta=beta)

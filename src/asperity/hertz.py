@@ -21,7 +21,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_overflow, check_poisson, check_positive, check_radius
+from ._validation import (
+    as_float_array,
+    check_broadcast,
+    check_overflow,
+    check_poisson,
+    check_positive,
+    check_radius,
+)
 
 __all__ = ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md"]
 
@@ -69,6 +76,7 @@ def hertz_radius(u_bar, beta):
     """
     beta = check_positive(beta, "beta")
     u = _penetration(u_bar)
+    check_broadcast(u_bar=u, beta=beta)
     with np.errstate(over="ignore"):
         a = beta * np.sqrt(u)
     return check_overflow(a, "u_bar", lambda: (_FLOAT_MAX / beta) ** 2, u)
@@ -120,6 +128,7 @@ def hertz_force(u_bar, alpha, beta, nu=0.3):
     beta = check_positive(beta, "beta")
     nu = check_poisson(nu)
     u = _penetration(u_bar)
+    check_broadcast(u_bar=u, alpha=alpha, beta=beta, nu=nu)
     with np.errstate(over="ignore", invalid="ignore"):
         scale = (8.0 / 3.0) / (1.0 - nu) * alpha * beta**2
         P = scale * u**1.5

@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_finite_result, check_positive
+from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive
 from .maugis_dugdale_branch import (
     A_MAX,
     DELTA_MAX,
@@ -111,6 +111,7 @@ def _check_t_lam(t, lam):
     """t and lam validated (types and ranges; _check_radius checks the radius bound)."""
     t = as_float_array(t, "t", allow_empty=True)
     lam = check_lambda(lam)
+    check_broadcast(t=t, lam=lam)
     lo, hi = T_RANGE
     if np.any((t < lo) | (t > hi)):
         raise ValueError(f"t = sqrt(m^2 - 1) must lie in [{lo:g}, {hi:g}], got {t!r}")
@@ -349,6 +350,7 @@ def md_t_of_radius(A, lam):
     """
     A = as_float_array(A, "A", allow_empty=True)
     lam = check_lambda(lam)
+    check_broadcast(A=A, lam=lam)
     A, lam = np.broadcast_arrays(A, lam)
     f1, f2, *_ = _brackets(np.full(A.shape, T_RANGE[1]))
     A_min = _radius_from_brackets(lam, f1, f2)[0]
@@ -423,6 +425,7 @@ def md_lambda(R, w, E_star, sigma0):
     w = check_positive(w, "w")
     E_star = check_positive(E_star, "E_star")
     sigma0 = check_positive(sigma0, "sigma0")
+    check_broadcast(R=R, w=w, E_star=E_star, sigma0=sigma0)
     with np.errstate(all="ignore"):
         K = (4.0 / 3.0) * E_star
         lam = 2.0 * sigma0 * np.cbrt(R / (np.pi * w * K * K))

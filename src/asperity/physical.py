@@ -55,6 +55,7 @@ from . import groups
 from ._validation import (
     check_1d,
     check_bool,
+    check_broadcast,
     check_finite_result,
     check_nonnegative,
     check_positive,
@@ -349,8 +350,10 @@ class PhysicalContact:
             force with adhesion (the message gives the limit in newtons).
         """
         P = check_1d(to_si(P, "N", "P"), "P")
+        with np.errstate(all="ignore"):
+            P_bar = check_finite_result(P / self.force_scale, "P/(N G b^2)", P=P)
         try:
-            curve = self.model.load_curve(P / self.force_scale)
+            curve = self.model.load_curve(P_bar)
         except ValueError as err:
             raise ValueError(f"{err} (loads in units of N G b^2 = {self.force_scale:.6g} N)") from None
         return self._physical(curve, P=P)
@@ -420,6 +423,7 @@ def work_of_adhesion_from_gamma(gamma, E_star, b):
     gamma = check_nonnegative(to_si(gamma, "", "gamma"), "gamma")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
     b = check_positive(to_si(b, "m", "b"), "b")
+    check_broadcast(gamma=gamma, E_star=E_star, b=b)
     with np.errstate(all="ignore"):
         w = gamma * E_star * b
     return _out(check_finite_result(w, "w", gamma=gamma, E_star=E_star, b=b))

@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_finite_result, check_nonnegative, check_positive, check_scalar_positive
+from ._validation import check_broadcast, check_finite_result, check_nonnegative, check_positive, check_scalar_positive
 from .maugis_dugdale import md_lambda
 from .units import to_si
 
@@ -90,6 +90,7 @@ def tabor_parameter(R, w, E_star, z0):
     w = check_positive(to_si(w, "J/m^2", "w"), "w")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
     z0 = check_positive(to_si(z0, "m", "z0"), "z0")
+    check_broadcast(R=R, w=w, E_star=E_star, z0=z0)
     with np.errstate(all="ignore"):
         mu = np.cbrt(R * w**2 / (E_star**2 * z0**3))
     return _out(check_finite_result(mu, "the Tabor parameter", R=R, w=w, E_star=E_star, z0=z0))
@@ -220,6 +221,7 @@ def fuller_tabor_parameter(sigma, R, w, E_star):
     R = check_positive(to_si(R, "m", "R"), "R")
     w = check_positive(to_si(w, "J/m^2", "w"), "w")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
+    check_broadcast(sigma=sigma, R=R, w=w, E_star=E_star)
     with np.errstate(all="ignore"):
         theta = E_star * sigma**1.5 / (np.sqrt(R) * w)
     return _out(check_finite_result(theta, "the Fuller-Tabor parameter", sigma=sigma, R=R, w=w, E_star=E_star))

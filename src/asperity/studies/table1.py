@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validation import check_finite_result, check_path, check_scalar_positive
+from .._validation import check_finite_result, check_path, check_scalar_poisson, check_scalar_positive
 from ..groups import load_scale
 from ._common import model, write_csv
 
@@ -62,6 +62,7 @@ def printed_load_scale_factor(alpha, beta, gamma, nu=0.3) -> float:
     :math:`1/\alpha`, leaving the separation of the pull-off unchanged.
     """
     alpha, beta, gamma = (check_scalar_positive(x, n) for x, n in ((alpha, "alpha"), (beta, "beta"), (gamma, "gamma")))
+    nu = check_scalar_poisson(nu)
     derived = load_scale(alpha, beta, gamma, nu, form="derived")
     printed = load_scale(alpha, beta, gamma, nu, form="printed")
     with np.errstate(all="ignore"):

@@ -73,7 +73,7 @@ import math
 
 import numpy as np
 
-from .._validation import check_finite_result, check_positive, check_range
+from .._validation import check_broadcast, check_finite_result, check_positive, check_range
 from ..surface import NAYAK_SIGMA_S
 from .summits import SummitParameters, moments, prepare
 
@@ -121,6 +121,7 @@ def bandwidth_alpha(m0, m2, m4):
     Nayak (1971); McCool (1986).
     """
     m0, m2, m4 = check_positive(m0, "m0"), check_positive(m2, "m2"), check_positive(m4, "m4")
+    check_broadcast(m0=m0, m2=m2, m4=m4)
     with np.errstate(all="ignore"):
         alpha_n = m0 * m4 / m2**2
     return _out(check_finite_result(alpha_n, "alpha_N", m0=m0, m2=m2, m4=m4))
@@ -148,6 +149,7 @@ def summit_density(m2, m4):
     Nayak (1971); McCool (1986).
     """
     m2, m4 = check_positive(m2, "m2"), check_positive(m4, "m4")
+    check_broadcast(m2=m2, m4=m4)
     with np.errstate(all="ignore"):
         eta = m4 / (6 * math.pi * math.sqrt(3) * m2)
     return _out(check_finite_result(eta, "eta", m2=m2, m4=m4))
@@ -173,7 +175,9 @@ def summit_radius(m4):
     Nayak (1971) (mean curvature of all summits); McCool (1986).
     """
     m4 = check_positive(m4, "m4")
-    return _out(0.375 * np.sqrt(math.pi / m4))
+    with np.errstate(all="ignore"):
+        R = 0.375 * np.sqrt(math.pi / m4)
+    return _out(check_finite_result(R, "R", m4=m4))
 
 
 def summit_sigma(m0, alpha_n, constant=NAYAK_SIGMA_S):
@@ -206,7 +210,10 @@ def summit_sigma(m0, alpha_n, constant=NAYAK_SIGMA_S):
     m0 = check_range(m0, "m0", 0.0, math.inf)
     alpha_n = check_positive(alpha_n, "alpha_n")
     c = check_range(constant, "constant", 0.0, 1.0)
-    return _out(np.sqrt(np.maximum(1.0 - c / alpha_n, 0.0) * m0))
+    check_broadcast(m0=m0, alpha_n=alpha_n, constant=c)
+    with np.errstate(all="ignore"):
+        sigma_s = np.sqrt(np.maximum(1.0 - c / alpha_n, 0.0) * m0)
+    return _out(check_finite_result(sigma_s, "sigma_s", m0=m0, alpha_n=alpha_n))
 
 
 def mean_summit_height(m0, alpha_n):
@@ -232,7 +239,10 @@ def mean_summit_height(m0, alpha_n):
     """
     m0 = check_range(m0, "m0", 0.0, math.inf)
     alpha_n = check_positive(alpha_n, "alpha_n")
-    return _out(4 * np.sqrt(m0 / (math.pi * alpha_n)))
+    check_broadcast(m0=m0, alpha_n=alpha_n)
+    with np.errstate(all="ignore"):
+        z = 4 * np.sqrt(m0 / (math.pi * alpha_n))
+    return _out(check_finite_result(z, "the mean summit height", m0=m0, alpha_n=alpha_n))
 
 
 def spectral_summits(topography) -> SummitParameters:
