@@ -26,6 +26,7 @@ EXTRAS = {
     "pint": "units",
     "mpmath": "reference",
     "SurfaceTopography": "topography",
+    "ContactMechanics": "bem",
     "lmfit": "fit",
     "xarray": "sweep",
     "dask": "sweep",
