@@ -63,6 +63,7 @@ _SUBMODULES = (
     "groups",
     "heights",
     "hertz",
+    "interaction",
     "jkr",
     "materials",
     "maugis_dugdale",
@@ -74,6 +75,7 @@ _SUBMODULES = (
     "studies",
     "topography",
     "units",
+    "validation",
 )
 
 __all__ = [

@@ -35,7 +35,6 @@ EXTRAS = {
     "h5netcdf": "sweep",
     "tqdm": "sweep",
     "bokeh": "explore",
-    "ContactMechanics": "bem",
 }
 
 
