@@ -226,7 +226,6 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     for method in METHODS:
         summits = getattr(analysis, method)
         contacts[method] = PhysicalContact(mat, summits.surface(A0), adhesion=False, interaction=interaction)
-    P = np.asarray(P, dtype=float) if not isinstance(P, np.ndarray) else P
     bem = bem_contact(topo, P, E_star=mat.E_star, periodic=periodic, tolerance=tolerance, maxiter=maxiter,
                       progress=progress)
     for method in METHODS:
