@@ -27,11 +27,12 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "asperity"
 LAYERS = [
     ("base", {"_validation", "_csv", "_optional", "_version", "_atomic", "_json", "units", "quadrature",
               "quantities"}),
-    ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch"}),
+    ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch",
+                              "jackson_green", "nix_gao"}),
     ("statistics, groups", {"groups", "heights"}),
-    ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
+    ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),
-    ("physical", {"materials", "physical", "surface", "regimes", "topography"}),
+    ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity"}),
     ("applications", {"fit", "sweeps", "validation"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]

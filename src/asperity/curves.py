@@ -35,7 +35,12 @@ COLUMNS = {name: q.meaning for name, q in CURVE_COLUMNS.items()}
 
 @dataclass(frozen=True)
 class CurveResult:
-    """One curve: NumPy arrays of equal length, one per column of :data:`COLUMNS`."""
+    """One curve: NumPy arrays of equal length, one per column of :data:`COLUMNS`.
+
+    ``plastic`` (:math:`n_p/N`, the fraction of asperities past the critical interference,
+    :data:`asperity.quantities.PLASTIC_COLUMNS`) is None unless the per-asperity law has a
+    critical interference (e.g. Jackson-Green); then it is the last column.
+    """
 
     d: np.ndarray
     P: np.ndarray
@@ -45,13 +50,17 @@ class CurveResult:
     pressure: np.ndarray
     contacts: np.ndarray
     parameters: dict = field(default_factory=dict, compare=False)
+    plastic: np.ndarray | None = None
 
     def __len__(self) -> int:
         return int(np.size(self.d))
 
     def columns(self) -> dict[str, np.ndarray]:
-        """The curve as an ordered dict of column name -> array."""
-        return {name: np.asarray(getattr(self, name)) for name in COLUMNS}
+        """The curve as an ordered dict of column name -> array (``plastic`` last, if present)."""
+        cols = {name: np.asarray(getattr(self, name)) for name in COLUMNS}
+        if self.plastic is not None:
+            cols["plastic"] = np.asarray(self.plastic)
+        return cols
 
     def to_dataframe(self):
         """The curve as a :class:`pandas.DataFrame` (needs pandas: ``asperity[frame]``)."""
@@ -85,9 +94,12 @@ class Model:
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
         Asperity heights (default: ``Gaussian()``, Eq 19).
-    law : ContactLaw, optional
-        Per-asperity law built for these parameters (default: ``AsperityLaw``, Hertz or
-        Maugis-Dugdale); an elastic-plastic law plugs in here.
+    law : ContactLaw or law spec, optional
+        Per-asperity law: a :class:`~asperity.asperity_law.ContactLaw` built for these
+        parameters, or a law spec of :data:`asperity.elastic_plastic.LAWS` (anything with a
+        ``contact_law(params)`` method, e.g. ``JacksonGreen(H_over_E=0.01)``), built here.
+        Default: ``AsperityLaw`` (Hertz or Maugis-Dugdale).  A law with a critical
+        interference (``plastic_fraction``) adds the column ``plastic`` to every curve.
 
     Raises
     ------
@@ -110,6 +122,8 @@ class Model:
         if not isinstance(heights, HeightDistribution):
             raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
         self.heights = heights
+        if law is not None and not isinstance(law, ContactLaw) and callable(getattr(law, "contact_law", None)):
+            law = law.contact_law(self.params)  # a law spec (asperity.elastic_plastic.LAWS)
         self.law = check_law(law, self.params)
         #: Largest valid separation: beyond it every quantity underflows.
         self.d_top = D_MAX - self.law.u_end
@@ -130,13 +144,16 @@ class Model:
     def _parameters(self):
         p = asdict(self.params)
         p["friction"] = repr(self.params.friction)
+        if callable(getattr(self.law, "parameters", None)):  # e.g. the Jackson-Green law and its hardness
+            p.update(self.law.parameters())
         return p
 
     def _result(self, d, sums) -> CurveResult:
         contacts, P, F, area = (sums[:, i] for i in range(4))
+        plastic = self.law.plastic_fraction(d, self.heights) if hasattr(self.law, "plastic_fraction") else None
         return CurveResult(d=d, P=P, F=F, mu=friction_coefficient(F, P), area=area,
                            pressure=mean_pressure(P, area, self.params.nu), contacts=contacts,
-                           parameters=self._parameters())
+                           parameters=self._parameters(), plastic=plastic)
 
     # -- curves ---------------------------------------------------------------------
     def separation_curve(self, d) -> CurveResult:

@@ -33,8 +33,19 @@ def run_curve(args, kind: str) -> None:
         raise UsageError(f"give {want} LIST" + (f" (not {other}) with --material" if physical
                                                else f" (or --material ... with {names[1]})"))
     if physical:
+        import warnings
+
+        from ..plasticity import PlasticityWarning
+
         values = quantity_list(text, unit, log=log, name=names[1])
-        curve = getattr(contact_from_args(args), f"{kind}_curve")(values)
+        contact = contact_from_args(args)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", PlasticityWarning)
+            curve = getattr(contact, f"{kind}_curve")(values)
+        notes = [str(w.message) for w in caught if issubclass(w.category, PlasticityWarning)]
+        for w in caught:  # anything else goes on as it came
+            if not issubclass(w.category, PlasticityWarning):
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     else:
         values = parse_list(text, log=log, name=names[0])
         curve = getattr(model_from_args(args), f"{kind}_curve")(values)
@@ -50,6 +61,8 @@ def run_curve(args, kind: str) -> None:
     if physical:
         import numpy as np
 
+        for note in notes:
+            print(f"asperity: note: {note} (command line: --law jackson-green --no-adhesion)", file=sys.stderr)
         fraction = np.nanmax(curve.area_fraction)
         if fraction > 0.1:
             print(f"asperity: note: the real contact area reaches {fraction:.0%} of the nominal "
