@@ -19,10 +19,9 @@ def load_example():
 
 
 def test_afm_gold_example(tmp_path, capsys):
+    from asperity import PlasticityWarning
     from asperity.physical import PhysicalContact
     from asperity.topography import analyse_surface
-
-    from asperity import PlasticityWarning
 
     example = load_example()
     with pytest.warns(PlasticityWarning, match="past the critical interference"):  # gold asperities yield

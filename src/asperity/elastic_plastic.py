@@ -202,8 +202,8 @@ class JacksonGreen:
     Parameters
     ----------
     H_over_E : float
-        Hardness over composite modulus :math:`H/E^*`, :math:`0 < H/E^* \le 0.284` (yield
-        strain :math:`S_y/E^* = (H/E^*)/2.84 \le 0.1`); with the size effect, :math:`H_0/E^*`.
+        Hardness over composite modulus :math:`H/E^*`, :math:`0 < H/E^* \le 0.142` (yield
+        strain :math:`S_y/E^* = (H/E^*)/2.84 \le 0.05`); with the size effect, :math:`H_0/E^*`.
     h_star_over_sigma : float
         Nix-Gao length over the summit-height deviation, :math:`h^*/\sigma \ge 0`; 0 (default)
         turns the size effect off.
@@ -291,7 +291,7 @@ class JacksonGreenLaw:
     params : ModelParameters
         The model's parameters; :math:`\gamma` must be 0 and :math:`0 \le \nu < 0.5`.
     H_over_E : float
-        Hardness :math:`H/E^*` (:math:`H_0/E^*` with the size effect), in (0, 0.284].
+        Hardness :math:`H/E^*` (:math:`H_0/E^*` with the size effect), in (0, 0.142].
     h_star_over_sigma : float
         Nix-Gao length :math:`h^*/\sigma \ge 0` (default 0: no size effect).
 
@@ -312,7 +312,7 @@ class JacksonGreenLaw:
     ValueError
         If :math:`\gamma > 0` (no consistent adhesion with a plastic core), :math:`\nu` lies
         outside [0, 0.5), an input is out of range, or with the size effect the yield strain
-        at the onset of yield exceeds 0.1 (outside the fits).
+        at the onset of yield exceeds 0.05 (outside the fits).
     """
 
     name = "jackson-green"

@@ -44,8 +44,9 @@ pressure of a fully plastic small contact) gives :math:`S_y = H/2.84`
 
 **Ranges.**  JG's :math:`C(\nu)` is fitted for :math:`0 \le \nu \le 0.5`, so the functions
 taking :math:`\nu` accept :math:`0 \le \nu < 0.5`; the yield strain :math:`e_y = S_y/E^*`
-must lie in :math:`(0, 0.1]` (JG's FEM materials: about 0.0005-0.01; the load fit crosses
-Hertz above :math:`\omega^* = 1` for every :math:`e_y \le 0.1`).
+must lie in :math:`(0, 0.05]` (JG's FEM materials: about 0.0005-0.01; up to 0.05 the load fit
+crosses Hertz above :math:`\omega^* = 1` for every :math:`\nu`, beyond about 0.065 it no longer
+does for :math:`\nu \to 0.5`), i.e. hardness :math:`H/E^* \le 0.142`.
 
 All functions broadcast like NumPy ufuncs.
 
@@ -110,8 +111,9 @@ HG_LIMIT = 2.84
 HG_RATE = 0.82
 #: JG 2005: the power 0.7 of :math:`a/R` in the geometric hardness.
 HG_POWER = 0.7
-#: Largest yield strain :math:`S_y/E^*` accepted (the load fit then still crosses Hertz above yield).
-E_Y_MAX = 0.1
+#: Largest yield strain :math:`S_y/E^*` accepted: up to it the load fit crosses Hertz above yield for
+#: every :math:`0 \le \nu < 0.5` (above about 0.065 it no longer does for :math:`\nu \to 0.5`).
+E_Y_MAX = 0.05
 
 
 def _nu(nu):
@@ -341,7 +343,7 @@ def jg_area_exponent(e_y):
     Parameters
     ----------
     e_y : array_like
-        Yield strain :math:`S_y/E^*`, in (0, 0.1].
+        Yield strain :math:`S_y/E^*`, in (0, 0.05].
 
     Returns
     -------
@@ -351,7 +353,7 @@ def jg_area_exponent(e_y):
     Raises
     ------
     ValueError
-        If ``e_y`` is not real, finite and in (0, 0.1].
+        If ``e_y`` is not real, finite and in (0, 0.05].
 
     Examples
     --------
@@ -366,7 +368,10 @@ def jg_area_exponent(e_y):
 
 
 def _omega_star(omega_star):
-    return check_nonnegative(omega_star, "omega_star")
+    w = as_float_array(omega_star, "omega_star", allow_empty=True)
+    if np.any(w < 0):
+        raise ValueError(f"omega_star must be >= 0 (valid range 0 <= omega_star < inf), got {omega_star!r}")
+    return w
 
 
 def jg_area_fit(omega_star, e_y):
@@ -382,7 +387,7 @@ def jg_area_fit(omega_star, e_y):
     omega_star : array_like
         Interference over the critical one, :math:`\omega^* = \omega/\omega_c \ge 0`.
     e_y : array_like
-        Yield strain :math:`S_y/E^*`, in (0, 0.1].
+        Yield strain :math:`S_y/E^*`, in (0, 0.05].
 
     Returns
     -------
@@ -421,7 +426,7 @@ def jg_area(omega_star, e_y):
     omega_star : array_like
         :math:`\omega/\omega_c \ge 0`.
     e_y : array_like
-        Yield strain :math:`S_y/E^*`, in (0, 0.1].
+        Yield strain :math:`S_y/E^*`, in (0, 0.05].
 
     Returns
     -------
@@ -459,7 +464,7 @@ def jg_radius_ratio(area_ratio, e_y, nu):
     area_ratio : array_like
         :math:`A/A_c \ge 0`.
     e_y : array_like
-        Yield strain :math:`S_y/E^*`, in (0, 0.1].
+        Yield strain :math:`S_y/E^*`, in (0, 0.05].
     nu : array_like
         Poisson's ratio, :math:`0 \le \nu < 0.5`.
 
@@ -542,7 +547,7 @@ def jg_load_fit(omega_star, e_y, nu):
     omega_star : array_like
         :math:`\omega/\omega_c \ge 0`.
     e_y : array_like
-        Yield strain :math:`S_y/E^*`, in (0, 0.1].
+        Yield strain :math:`S_y/E^*`, in (0, 0.05].
     nu : array_like
         Poisson's ratio, :math:`0 \le \nu < 0.5`.
 
@@ -602,7 +607,7 @@ def jg_load_transition(e_y, nu):
     Parameters
     ----------
     e_y : array_like
-        Yield strain :math:`S_y/E^*`, in (0, 0.1].
+        Yield strain :math:`S_y/E^*`, in (0, 0.05].
     nu : array_like
         Poisson's ratio, :math:`0 \le \nu < 0.5`.
 
@@ -647,7 +652,7 @@ def jg_load(omega_star, e_y, nu):
     omega_star : array_like
         :math:`\omega/\omega_c \ge 0`.
     e_y : array_like
-        Yield strain :math:`S_y/E^*`, in (0, 0.1].
+        Yield strain :math:`S_y/E^*`, in (0, 0.05].
     nu : array_like
         Poisson's ratio, :math:`0 \le \nu < 0.5`.
 
