@@ -38,3 +38,33 @@ def test_afm_gold_example(tmp_path, capsys):
         again = contact.load_curve(np.geomspace(1e-4, 10.0, 60)[:3])
     np.testing.assert_allclose(curve.mu[:3], again.mu, rtol=1e-12)
     assert np.all(curve.area < 1e-6)  # the real area stays below the nominal area
+
+
+def test_plasticity_example(tmp_path, capsys):
+    from asperity import PlasticityWarning
+    from asperity.physical import PhysicalContact
+
+    spec = importlib.util.spec_from_file_location("plasticity_example", EXAMPLE.parent / "plasticity.py")
+    example = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(example)
+    disks, gold = example.main(["--out", str(tmp_path)])
+    assert (tmp_path / "plasticity.png").read_bytes()[:4] == b"\x89PNG"
+    out = capsys.readouterr().out
+    assert "psi = 0.251" in out and "psi = 4.9" in out and "the elastic model warned" in out
+    # silicon stays elastic (no warning), nickel yields (the elastic model warns)
+    assert disks["Si"]["warnings"] == [] and len(disks["Ni"]["warnings"]) == 1
+    # the same numbers straight from the library
+    loads = example.DISK_LOADS
+    ni = PhysicalContact("Ni", example.DISK, adhesion=False, plasticity="jackson-green").load_curve(loads)
+    np.testing.assert_allclose(disks["Ni"]["plastic"].area, ni.area, rtol=1e-13)
+    with pytest.warns(PlasticityWarning):
+        ni_el = PhysicalContact("Ni", example.DISK, adhesion=False).load_curve(loads)
+    assert np.all(ni.area > ni_el.area)
+    for R, g in gold.items():
+        sized = PhysicalContact("Au", example.gold_surface(R), adhesion=False, plasticity="jackson-green",
+                                hardness=188e6, h_star=1e-6).load_curve(example.GOLD_LOADS)
+        np.testing.assert_allclose(g["sized_curve"].plastic, sized.plastic, rtol=1e-13)
+        # the size effect keeps asperities elastic: a smaller yielded share at every load
+        assert np.all(example.share(g["sized_curve"]) < 0.7 * example.share(g["plain_curve"]))
+    rows = (tmp_path / "plasticity.csv").read_text().splitlines()
+    assert rows[0].startswith("load_N,R_m") and len(rows) == 1 + 2 * len(example.GOLD_LOADS)

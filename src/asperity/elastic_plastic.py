@@ -384,24 +384,26 @@ class JacksonGreenLaw:
                                      rtol=4 * np.finfo(float).eps))
 
     # -- the law ----------------------------------------------------------------------------
-    def _radius(self, u):
-        """Contact radius a/b at penetrations u (array)."""
-        return self.evaluate(u)[0]
+    def _radius(self, u: float) -> float:
+        """Contact radius a/b at one penetration u > u_t (JG's area fit)."""
+        w = float(ng_scaled_interference(u, self.u_c0, self.h_star))
+        return self.params.beta * float(np.sqrt(u / w * jg_area_fit(w, float(self._e_y(np.array([u]))[0]))))
 
     def _friction_breakpoints(self) -> tuple[float, ...]:
-        """Penetrations where the law's radius crosses the friction law's breakpoint radii."""
+        """Penetrations where the law's radius crosses the friction law's breakpoint radii.
+
+        Below the area's switch the radius is Hertz's, :math:`\bar u = (\bar a_k/\beta)^2`; above,
+        the law's radius exceeds Hertz's, so the crossing lies in :math:`[\bar u_t, (\bar a_k/\beta)^2]`.
+        """
         beta = self.params.beta
         out = []
         for a_k in self.params.friction.breakpoints():
             u_hertz = (a_k / beta) ** 2
             if u_hertz <= self.u_t:
                 out.append(u_hertz)
-                continue
-            lo, hi = self.u_t, 2.0 * self.u_t
-            while self._radius(np.array([hi]))[0] < a_k:
-                lo, hi = hi, 2.0 * hi
-            out.append(float(optimize.brentq(lambda u, a_k=a_k: float(self._radius(np.array([u]))[0]) - a_k, lo, hi,
-                                             xtol=1e-14 * hi, rtol=4 * np.finfo(float).eps)))
+            else:
+                out.append(float(optimize.brentq(lambda u, a_k=a_k: self._radius(u) - a_k, self.u_t, u_hertz,
+                                                 xtol=1e-15 * u_hertz, rtol=4 * np.finfo(float).eps)))
         return tuple(out)
 
     def evaluate(self, u_bar):
