@@ -32,7 +32,7 @@ at :math:`\omega^* = 1.9` it differs from Hertz by +7.5 % (:math:`\nu = 0`), +0.
 -3.2 % (:math:`\nu = 0.49`), because :math:`C(\nu)` scales its plastic term.  A yielding
 sphere can only be softer than the elastic one, so the load is taken as Hertz until the fit
 falls below it: the switch is at the crossing :math:`\omega^*_x` of the two curves
-(:func:`jg_load_transition`; 4.14 at :math:`\nu = 0`, 2.01 at 0.3, 1.45 at 0.44), where the
+(:func:`jg_load_transition`; 4.14 at :math:`\nu = 0`, 2.01 at 0.3, 1.44 at 0.44), where the
 load is continuous.  No published number is changed; only the point where one published
 curve hands over to the other moves.  The slope of the load and of the area is not
 continuous at the switches (JG do not claim it).
