@@ -241,7 +241,7 @@ LAWS = {"elastic": Elastic, "jackson-green": JacksonGreen}
 
 
 def make_law(name: str, *, H_over_E=None, h_star_over_sigma=None):
-    """The law spec called ``name`` in :data:`LAWS`, with its options.
+    r"""The law spec called ``name`` in :data:`LAWS`, with its options.
 
     Parameters
     ----------
@@ -250,7 +250,7 @@ def make_law(name: str, *, H_over_E=None, h_star_over_sigma=None):
     H_over_E : float, optional
         Hardness :math:`H/E^*` (needed by, and only by, ``'jackson-green'``).
     h_star_over_sigma : float, optional
-        Nix-Gao length :math:`h^*/\\sigma` (``'jackson-green'`` only; default 0).
+        Nix-Gao length :math:`h^*/\sigma` (``'jackson-green'`` only; default 0).
 
     Returns
     -------
@@ -266,6 +266,10 @@ def make_law(name: str, *, H_over_E=None, h_star_over_sigma=None):
     --------
     >>> make_law("jackson-green", H_over_E=0.01)
     JacksonGreen(H_over_E=0.01, h_star_over_sigma=0.0)
+
+    References
+    ----------
+    Jackson & Green (2005); Nix & Gao (1998); docs/plasticity.md.
     """
     key = name.strip().lower() if isinstance(name, str) else name
     if key not in LAWS:

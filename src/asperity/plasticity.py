@@ -40,7 +40,7 @@ import warnings
 
 import numpy as np
 
-from ._validation import check_positive, check_scalar_positive
+from ._validation import check_nonnegative, check_positive, check_scalar_positive
 from .elastic_plastic import LAWS, critical_penetration
 from .materials import Material
 
@@ -85,8 +85,8 @@ def plasticity_index(E_star, H, sigma_s, R):
 
     Examples
     --------
-    >>> plasticity_index(100e9, 1e9, 4e-9, 1e-6)  # 100 * sqrt(4e-3)
-    6.324555320336759
+    >>> round(plasticity_index(100e9, 1e9, 4e-9, 1e-6), 12)  # 100 * sqrt(4e-3)
+    6.324555320337
 
     References
     ----------
@@ -98,7 +98,10 @@ def plasticity_index(E_star, H, sigma_s, R):
 
 
 def plastic_share(plastic, contacts):
-    """Share of the asperities in contact that are past the critical interference, ``plastic/contacts``.
+    r"""Share of the asperities in contact that are past the critical interference, :math:`n_p/n`.
+
+    .. math::
+        \frac{n_p}{n} = \frac{\int_{\bar d + \bar u_c}^\infty\phi}{\int_{\bar d}^\infty\phi}
 
     Parameters
     ----------
@@ -112,13 +115,22 @@ def plastic_share(plastic, contacts):
     ndarray
         The share in [0, 1]; 0 where nothing touches.
 
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite, or negative.
+
     Examples
     --------
     >>> plastic_share([0.0, 0.1], [0.0, 0.4]).tolist()
     [0.0, 0.25]
+
+    References
+    ----------
+    Greenwood & Williamson (1966); docs/plasticity.md (the yield check).
     """
-    plastic = np.asarray(plastic, dtype=float)
-    contacts = np.asarray(contacts, dtype=float)
+    plastic = check_nonnegative(plastic, "plastic")
+    contacts = check_nonnegative(contacts, "contacts")
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(contacts > 0, plastic / np.where(contacts > 0, contacts, 1.0), 0.0)
 

@@ -119,7 +119,7 @@ MODEL_PARAMETERS = _registry(
              typical=(1e3, 1e7), default=8.0e4, source="Eq 3, Hurtado & Kim 1999"),
     Quantity("H_over_E", "H/E^*", "hardness over composite modulus H/E* of the elastic-plastic law "
              "(H0/E* with the size effect); plasticity index psi = alpha/(H/E*)", lo=0.0, hi=0.142,
-             hi_inclusive=True, log=True, typical=(1e-4, 0.15),
+             hi_inclusive=True, log=True, typical=(1e-4, 0.14),
              source="Jackson & Green 2005 (S_y = H/2.84); docs/plasticity.md"),
     Quantity("h_star_over_sigma", r"h^*/\sigma", "Nix-Gao size-effect length over sigma, h*/sigma; 0 = no "
              "size effect", lo=0.0, lo_inclusive=True, log=True, typical=(1e-2, 1e4), default=0.0,
