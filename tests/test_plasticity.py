@@ -149,3 +149,17 @@ def test_table_hardness_and_pairs():
     assert pair("Au", "mica", H=188e6).H == 188e6
     with pytest.raises(ValueError, match=r"H must be > 0 Pa"):
         Material("x", E=1e9, nu=0.3, H=0.0)
+
+
+def test_physical_plastic_column_in_every_export():
+    pytest.importorskip("pandas")
+    c = PhysicalContact("Au", GOLD_SURFACE, adhesion=False, plasticity="jackson-green").separation_curve([1e-9, 2e-9])
+    frame = c.to_dataframe()
+    assert list(frame.columns)[-1] == "plastic" and frame.attrs["units"]["plastic"] == "1"
+    np.testing.assert_array_equal(frame["plastic"], c.plastic)
+    assert np.all(c.plastic <= c.contacts)
+
+
+def test_out_of_range_hardness_is_refused_at_construction():
+    with pytest.raises(ValueError, match=r"H_over_E .* \(0, 0.142\]"):
+        PhysicalContact("Au", GOLD_SURFACE, adhesion=False, plasticity="jackson-green", hardness="20GPa")

@@ -220,10 +220,12 @@ class PhysicalContact(ContactPlasticity):
         self.plastic_threshold = check_scalar_positive(plastic_threshold, "plastic_threshold", allow_zero=True)
         if self.plastic_threshold > 1.0:
             raise ValueError(f"plastic_threshold must lie in [0, 1], got {plastic_threshold!r}")
-        if LAWS[self.law].plastic and self.gamma > 0.0:
-            raise ValueError(f"plasticity={self.law!r} has no adhesion, but material {self.material.name!r} has a "
-                             f"work of adhesion w = {self.w:g} J/m^2 (Maugis-Dugdale cannot be combined with a "
-                             "plastic core consistently): pass adhesion=False")
+        if LAWS[self.law].plastic:
+            if self.gamma > 0.0:
+                raise ValueError(f"plasticity={self.law!r} has no adhesion, but material {self.material.name!r} has "
+                                 f"a work of adhesion w = {self.w:g} J/m^2 (Maugis-Dugdale cannot be combined with a "
+                                 "plastic core consistently): pass adhesion=False")
+            self._law_spec = LAWS[self.law](self.H_over_E, self.h_star / self.surface.sigma_s)  # validated here
 
     def _friction_law(self, friction) -> FrictionLaw | None:
         if friction is None or isinstance(friction, FrictionLaw):
@@ -305,7 +307,7 @@ class PhysicalContact(ContactPlasticity):
         """The dimensionless :class:`~asperity.Model` with these alpha, beta, gamma, nu, h/b and law."""
         kwargs = {} if self.friction is None else {"friction": self.friction}
         if LAWS[self.law].plastic:
-            kwargs["law"] = LAWS[self.law](self.H_over_E, self.h_star / self.surface.sigma_s)
+            kwargs["law"] = self._law_spec
         return Model(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b,
                      heights=self.heights, **kwargs)
 

@@ -112,3 +112,22 @@ def test_help_lists_every_law(capsys):
     out = capsys.readouterr().out
     assert all(name in out for name in LAWS) and "--hardness" in out and "--h-star" in out
     assert "plastic" in out  # the optional column is listed with the units
+
+
+def test_pulloff_with_the_plastic_law(capsys):
+    # No adhesion, no pull-off: the command reports the library's zero force.
+    code, out, _ = run(capsys, "pulloff", *AU, "--no-adhesion", "--law", "jackson-green", "--format", "json")
+    po = PhysicalContact("Au", SURFACE, adhesion=False, plasticity="jackson-green").pull_off()
+    assert code == 0 and po.force == 0.0 and '"pull_off_N": 0.0' in out
+    code, out, _ = run(capsys, "pulloff", *DIMLESS, "--gamma", "0", "--law", "jackson-green", "--hardness", "0.01",
+                       "--format", "json")
+    assert code == 0 and Model(0.05, 1000.0, law=JacksonGreen(0.01)).pull_off().force == 0.0
+    assert '"pull_off": 0.0' in out
+
+
+def test_plot_of_a_plastic_curve(capsys, tmp_path):
+    pytest.importorskip("matplotlib")
+    png = tmp_path / "jg.png"
+    code, _, _ = run(capsys, "load", *DIMLESS, "--law", "jackson-green", "--hardness", "0.005", "--P", "1:1e3:5",
+                     "--plot", str(png), "-o", str(tmp_path / "jg.csv"))
+    assert code == 0 and png.read_bytes()[:4] == b"\x89PNG"
