@@ -20,7 +20,7 @@ from asperity.elastic_plastic import (
 )
 from asperity.friction_stress import ConstantShear
 from asperity.hertz import hertz_force, hertz_radius
-from asperity.jackson_green import jg_area, jg_load, jg_load_transition
+from asperity.jackson_green_fits import jg_area, jg_load, jg_load_transition
 from asperity.nix_gao import ng_critical_interference
 
 #: (alpha, beta, nu, H/E*, h*/sigma): plastic soon (psi = 10), gold-like (nu = 0.44), hard and

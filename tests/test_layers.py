@@ -28,7 +28,7 @@ LAYERS = [
     ("base", {"_validation", "_csv", "_optional", "_version", "_atomic", "_json", "units", "quadrature",
               "quantities"}),
     ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch",
-                              "jackson_green", "nix_gao"}),
+                              "jackson_green", "jackson_green_fits", "nix_gao"}),
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),

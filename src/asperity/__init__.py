@@ -8,7 +8,8 @@ Layers, each importing only downward:
 
 * single-asperity laws: :mod:`~asperity.friction_stress`, :mod:`~asperity.hertz`,
   :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`,
-  :mod:`~asperity.jackson_green` (elastic-plastic), :mod:`~asperity.nix_gao` (size effect)
+  :mod:`~asperity.jackson_green` and :mod:`~asperity.jackson_green_fits` (elastic-plastic),
+  :mod:`~asperity.nix_gao` (size effect)
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
   :mod:`~asperity.heights`
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
@@ -70,6 +71,7 @@ _SUBMODULES = (
     "heights",
     "hertz",
     "jackson_green",
+    "jackson_green_fits",
     "jkr",
     "materials",
     "maugis_dugdale",

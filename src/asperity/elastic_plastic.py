@@ -22,7 +22,7 @@ name               spec                          per-asperity law
 
 (the Hertz radius and force at :math:`\bar u_c`), so :math:`\bar a = \beta(\bar u_c\,A/A_c)^{1/2}`
 and :math:`P/(Gb^2) = (P_c/Gb^2)(P/P_c)` with :math:`A/A_c` and :math:`P/P_c` of
-:func:`~asperity.jackson_green.jg_area` and :func:`~asperity.jackson_green.jg_load` at
+:func:`~asperity.jackson_green_fits.jg_area` and :func:`~asperity.jackson_green_fits.jg_load` at
 :math:`\omega^* = \bar u/\bar u_c`.  The plasticity index of Greenwood and Williamson,
 :math:`\psi = (E^*/H)(\sigma/R)^{1/2} = \alpha/(H/E^*)`, gives
 :math:`\bar u_{c0} = (\pi C/(2\cdot2.84))^2/\psi^2`.
@@ -36,7 +36,7 @@ hardness at penetration :math:`\bar u` is :math:`H\sqrt{1 + h^*/(\sigma\bar u)}`
 **Regime boundaries** (:attr:`JacksonGreenLaw.breakpoints`): the critical interference
 :math:`\bar u_c` (:math:`\omega^* = 1`, yield starts; the *plastic fraction* counts
 asperities beyond it), the load's switch :math:`\bar u_x` (:math:`\omega^*_x`,
-:func:`~asperity.jackson_green.jg_load_transition`), the area's switch :math:`\bar u_t`
+:func:`~asperity.jackson_green_fits.jg_load_transition`), the area's switch :math:`\bar u_t`
 (:math:`\omega^* = 1.9`), and the Hurtado-Kim radii mapped through the law's radius.
 
 **Adhesion.**  The Jackson-Green law has none: it needs :math:`\gamma = 0`.  The model's
@@ -63,15 +63,8 @@ from scipy import optimize
 from ._validation import as_float_array, check_nonnegative, check_positive, scalar
 from .asperity_law import AsperityLaw, ModelParameters
 from .heights import GAUSSIAN, HeightDistribution
-from .jackson_green import (
-    E_Y_MAX,
-    OMEGA_T,
-    jg_area_fit,
-    jg_load_fit,
-    jg_load_transition,
-    jg_yield_coefficient,
-    jg_yield_from_hardness,
-)
+from .jackson_green import E_Y_MAX, OMEGA_T, jg_yield_coefficient, jg_yield_from_hardness
+from .jackson_green_fits import jg_area_fit, jg_load_fit, jg_load_transition
 from .nix_gao import ng_interference, ng_scaled_interference
 
 __all__ = [
