@@ -20,7 +20,8 @@ quantity            definition                                            functi
 :math:`a/R`         :math:`(\pi C e_y/2)(A/A_c)^{1/2}`                    :func:`jg_radius_ratio`
 :math:`H_G/S_y`     :math:`2.84[1 - e^{-0.82(a/R)^{-0.7}}]`               :func:`jg_hardness_ratio`
 :math:`P/P_c`       :math:`e^{-\omega^{*5/12}/4}\omega^{*3/2}
-                    + \tfrac{4H_G}{CS_y}[1 - e^{-\omega^{*5/9}/25}]\omega^*`  ``jackson_green_fits.jg_load_fit``
+                    + \tfrac{4H_G}{CS_y}[1 - e^{-\omega^{*5/9}/25}]
+                    \,\omega^*`                                           ``jackson_green_fits.jg_load_fit``
 ==================  ====================================================  ===================================
 
 The fits and the law built from them (Hertz below the transitions, the fits above, with the
