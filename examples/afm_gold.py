@@ -45,6 +45,8 @@ def main(argv=None):
     contact = PhysicalContact("Au", analysis.spectral.surface(args.area))
     print(f"\nN = {contact.N:.3g} asperities, alpha = {contact.alpha:.4g}, beta = {contact.beta:.4g}, "
           f"gamma = {contact.gamma:.4g}, lambda = {contact.lam:.3g}")
+    print(f"plasticity index psi = {contact.plasticity_index:.3g} (gold asperities yield at "
+          f"{contact.critical_interference:.2g} m: expect asperity.PlasticityWarning; see examples/plasticity.py)")
 
     # 3. Friction coefficient versus load in newtons, and the pull-off force.
     loads = np.geomspace(1e-4, 10.0, 60)

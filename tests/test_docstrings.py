@@ -15,7 +15,8 @@ import asperity
 DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
-                   "asperity.heights"]
+                   "asperity.heights", "asperity.jackson_green", "asperity.jackson_green_fits",
+                   "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -29,6 +30,13 @@ FULL_DOCS = {
     "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
                               "invert_branch"],
     "asperity.pull_off_search": ["find_pull_off"],
+    "asperity.jackson_green": ["jg_yield_coefficient", "jg_yield_from_hardness", "jg_critical_interference",
+                               "jg_critical_load", "jg_critical_area", "jg_area_exponent", "jg_radius_ratio",
+                               "jg_hardness_ratio"],
+    "asperity.jackson_green_fits": ["jg_area_fit", "jg_area", "jg_load_fit", "jg_load_transition", "jg_load"],
+    "asperity.nix_gao": ["ng_hardness", "ng_scaled_interference", "ng_interference", "ng_critical_interference"],
+    "asperity.elastic_plastic": ["critical_penetration", "plastic_fraction", "make_law"],
+    "asperity.plasticity": ["plasticity_index", "plastic_share"],
 }
 
 

@@ -19,11 +19,13 @@ def load_example():
 
 
 def test_afm_gold_example(tmp_path, capsys):
+    from asperity import PlasticityWarning
     from asperity.physical import PhysicalContact
     from asperity.topography import analyse_surface
 
     example = load_example()
-    curve, pull = example.main(["--out", str(tmp_path)])
+    with pytest.warns(PlasticityWarning, match="past the critical interference"):  # gold asperities yield
+        curve, pull = example.main(["--out", str(tmp_path)])
     assert (tmp_path / "afm_gold.png").read_bytes()[:4] == b"\x89PNG"
     assert (tmp_path / "mu_vs_load.csv").exists()
     out = capsys.readouterr().out
@@ -32,14 +34,16 @@ def test_afm_gold_example(tmp_path, capsys):
     analysis = analyse_surface(tmp_path / "gold_scan.x3p")
     contact = PhysicalContact("Au", analysis.spectral.surface(1e-6))
     assert pull.force == pytest.approx(contact.pull_off().force, rel=1e-12)
-    np.testing.assert_allclose(curve.mu[:3], contact.load_curve(np.geomspace(1e-4, 10.0, 60)[:3]).mu,
-                               rtol=1e-12)
+    with pytest.warns(PlasticityWarning):
+        again = contact.load_curve(np.geomspace(1e-4, 10.0, 60)[:3])
+    np.testing.assert_allclose(curve.mu[:3], again.mu, rtol=1e-12)
     assert np.all(curve.area < 1e-6)  # the real area stays below the nominal area
 
 
 VALIDATE = pathlib.Path(__file__).parents[1] / "examples" / "validate_surface.py"
 
 
+@pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
 def test_validate_surface_example(tmp_path, capsys):
     pytest.importorskip("ContactMechanics")
     pytest.importorskip("matplotlib")
@@ -60,3 +64,32 @@ def test_validate_surface_example(tmp_path, capsys):
     np.testing.assert_allclose(again.columns()["area_bem_m2"], result.columns()["area_bem_m2"], rtol=1e-12)
     np.testing.assert_allclose(again.columns()["area_spectral_m2"], result.columns()["area_spectral_m2"],
                                rtol=1e-12)
+
+def test_plasticity_example(tmp_path, capsys):
+    from asperity import PlasticityWarning
+    from asperity.physical import PhysicalContact
+
+    spec = importlib.util.spec_from_file_location("plasticity_example", EXAMPLE.parent / "plasticity.py")
+    example = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(example)
+    disks, gold = example.main(["--out", str(tmp_path)])
+    assert (tmp_path / "plasticity.png").read_bytes()[:4] == b"\x89PNG"
+    out = capsys.readouterr().out
+    assert "psi = 0.251" in out and "psi = 4.9" in out and "the elastic model warned" in out
+    # silicon stays elastic (no warning), nickel yields (the elastic model warns)
+    assert disks["Si"]["warnings"] == [] and len(disks["Ni"]["warnings"]) == 1
+    # the same numbers straight from the library
+    loads = example.DISK_LOADS
+    ni = PhysicalContact("Ni", example.DISK, adhesion=False, plasticity="jackson-green").load_curve(loads)
+    np.testing.assert_allclose(disks["Ni"]["plastic"].area, ni.area, rtol=1e-13)
+    with pytest.warns(PlasticityWarning):
+        ni_el = PhysicalContact("Ni", example.DISK, adhesion=False).load_curve(loads)
+    assert np.all(ni.area > ni_el.area)
+    for R, g in gold.items():
+        sized = PhysicalContact("Au", example.gold_surface(R), adhesion=False, plasticity="jackson-green",
+                                hardness=188e6, h_star=1e-6).load_curve(example.GOLD_LOADS)
+        np.testing.assert_allclose(g["sized_curve"].plastic, sized.plastic, rtol=1e-13)
+        # the size effect keeps asperities elastic: a smaller yielded share at every load
+        assert np.all(example.share(g["sized_curve"]) < 0.7 * example.share(g["plain_curve"]))
+    rows = (tmp_path / "plasticity.csv").read_text().splitlines()
+    assert rows[0].startswith("load_N,R_m") and len(rows) == 1 + 2 * len(example.GOLD_LOADS)

@@ -7,13 +7,15 @@ import pytest
 from asperity import quantities
 from asperity.curves import COLUMNS, CurveResult
 from asperity.physical import PHYSICAL_COLUMNS, PhysicalCurve
-from asperity.quantities import CURVE_COLUMNS, MODEL_PARAMETERS, quantity
+from asperity.quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PLASTIC_COLUMNS, quantity
 
 
 def test_curve_columns_are_the_result_fields():
     assert list(COLUMNS) == list(CURVE_COLUMNS)
-    fields = [f for f in CurveResult.__dataclass_fields__ if f != "parameters"]
+    fields = [f for f in CurveResult.__dataclass_fields__ if f not in ("parameters", *PLASTIC_COLUMNS)]
     assert fields == list(CURVE_COLUMNS)
+    assert all(name in CurveResult.__dataclass_fields__ for name in PLASTIC_COLUMNS)
+    assert all(name in PhysicalCurve.__dataclass_fields__ for name in PLASTIC_COLUMNS)
     assert all(name in PhysicalCurve.__dataclass_fields__ for name in PHYSICAL_COLUMNS)
     assert [col for col, _, _ in PHYSICAL_COLUMNS.values()] == ["d_m", "P_N", "F_N", "mu", "area_m2",
                                                                "pressure_Pa", "contacts"]

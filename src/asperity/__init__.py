@@ -7,11 +7,13 @@ friction stress and Maugis-Dugdale adhesion, after Adams, Müftü and Mohd Azhar
 Layers, each importing only downward:
 
 * single-asperity laws: :mod:`~asperity.friction_stress`, :mod:`~asperity.hertz`,
-  :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`
+  :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`,
+  :mod:`~asperity.jackson_green` and :mod:`~asperity.jackson_green_fits` (elastic-plastic),
+  :mod:`~asperity.nix_gao` (size effect)
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
   :mod:`~asperity.heights`
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
-  :mod:`~asperity.multi_asperity`
+  :mod:`~asperity.multi_asperity`; the laws by name: :mod:`~asperity.elastic_plastic`
 * curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
   the command line: :mod:`~asperity.cli`
 
@@ -37,6 +39,11 @@ _EXPORTS = {
     "pull_off": "curves",
     "separation_curve": "curves",
     "ConstantShear": "friction_stress",
+    "Elastic": "elastic_plastic",
+    "JacksonGreen": "elastic_plastic",
+    "LAWS": "elastic_plastic",
+    "PlasticityWarning": "plasticity",
+    "AsperityWarning": "_warnings",
     "HurtadoKim": "friction_stress",
     "GAUSSIAN": "heights",
     "Gaussian": "heights",
@@ -59,16 +66,21 @@ _SUBMODULES = (
     "cli",
     "curves",
     "dmt",
+    "elastic_plastic",
     "friction_stress",
     "groups",
     "heights",
     "hertz",
     "interaction",
+    "jackson_green",
+    "jackson_green_fits",
     "jkr",
     "materials",
     "maugis_dugdale",
     "multi_asperity",
+    "nix_gao",
     "physical",
+    "plasticity",
     "quadrature",
     "quantities",
     "reference",
@@ -87,6 +99,11 @@ __all__ = [
     "pull_off",
     "separation_curve",
     "ConstantShear",
+    "Elastic",
+    "JacksonGreen",
+    "LAWS",
+    "PlasticityWarning",
+    "AsperityWarning",
     "HurtadoKim",
     "GAUSSIAN",
     "Gaussian",

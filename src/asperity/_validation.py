@@ -23,6 +23,7 @@ __all__ = [
     "check_positive",
     "check_radius",
     "check_range",
+    "check_interval",
     "check_scalar_poisson",
     "check_scalar_positive",
     "check_optional_positive",
@@ -92,6 +93,22 @@ def check_range(value, name: str, lo: float, hi: float) -> np.ndarray:
     arr = as_float_array(value, name)
     if np.any((arr < lo) | (arr > hi)):
         raise ValueError(f"{name} must lie in [{lo:g}, {hi:g}], got {value!r}")
+    return arr
+
+
+def check_interval(value, name: str, lo: float, hi: float, *, lo_open: bool = False, hi_open: bool = False,
+                   context: str = "") -> np.ndarray:
+    """``value`` as a float array; every element in the interval from ``lo`` to ``hi``.
+
+    The ends are included unless ``lo_open``/``hi_open``; the message reads
+    ``"{name} must lie in [lo, hi){context}, got ..."``.
+    """
+    arr = as_float_array(value, name)
+    below = arr <= lo if lo_open else arr < lo
+    above = arr >= hi if hi_open else arr > hi
+    if np.any(below | above):
+        left, right = "(" if lo_open else "[", ")" if hi_open else "]"
+        raise ValueError(f"{name} must lie in {left}{lo:g}, {hi:g}{right}{context}, got {value!r}")
     return arr
 
 

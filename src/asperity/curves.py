@@ -36,7 +36,12 @@ COLUMNS = {name: q.meaning for name, q in CURVE_COLUMNS.items()}
 
 @dataclass(frozen=True)
 class CurveResult:
-    """One curve: NumPy arrays of equal length, one per column of :data:`COLUMNS`."""
+    """One curve: NumPy arrays of equal length, one per column of :data:`COLUMNS`.
+
+    ``plastic`` (:math:`n_p/N`, the fraction of asperities past the critical interference,
+    :data:`asperity.quantities.PLASTIC_COLUMNS`) is None unless the per-asperity law has a
+    critical interference (e.g. Jackson-Green); then it is the last column.
+    """
 
     d: np.ndarray
     P: np.ndarray
@@ -46,13 +51,17 @@ class CurveResult:
     pressure: np.ndarray
     contacts: np.ndarray
     parameters: dict = field(default_factory=dict, compare=False)
+    plastic: np.ndarray | None = None
 
     def __len__(self) -> int:
         return int(np.size(self.d))
 
     def columns(self) -> dict[str, np.ndarray]:
-        """The curve as an ordered dict of column name -> array."""
-        return {name: np.asarray(getattr(self, name)) for name in COLUMNS}
+        """The curve as an ordered dict of column name -> array (``plastic`` last, if present)."""
+        cols = {name: np.asarray(getattr(self, name)) for name in COLUMNS}
+        if self.plastic is not None:
+            cols["plastic"] = np.asarray(self.plastic)
+        return cols
 
     def to_dataframe(self):
         """The curve as a :class:`pandas.DataFrame` (needs pandas: ``asperity[frame]``)."""
@@ -86,14 +95,17 @@ class Model:
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
         Asperity heights (default: ``Gaussian()``, Eq 19).
-    law : ContactLaw, optional
-        Per-asperity law built for these parameters (default: ``AsperityLaw``, Hertz or
-        Maugis-Dugdale); an elastic-plastic law plugs in here.
     interaction : None, 'none' or an interaction object, optional
         Asperity interaction (:mod:`asperity.interaction`): None (default) is plain GW;
         a :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood &
         Paggi 2008) makes ``d`` the apparent separation from the undeformed surface
         (non-adhesive models only).
+    law : ContactLaw or law spec, optional
+        Per-asperity law: a :class:`~asperity.asperity_law.ContactLaw` built for these
+        parameters, or a law spec of :data:`asperity.elastic_plastic.LAWS` (anything with a
+        ``contact_law(params)`` method, e.g. ``JacksonGreen(H_over_E=0.01)``), built here.
+        Default: ``AsperityLaw`` (Hertz or Maugis-Dugdale).  A law with a critical
+        interference (``plastic_fraction``) adds the column ``plastic`` to every curve.
 
     Raises
     ------
@@ -116,6 +128,8 @@ class Model:
         if not isinstance(heights, HeightDistribution):
             raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
         self.heights = heights
+        if law is not None and not isinstance(law, ContactLaw) and callable(getattr(law, "contact_law", None)):
+            law = law.contact_law(self.params)  # a law spec (asperity.elastic_plastic.LAWS)
         self.law = check_law(law, self.params)
         #: Asperity interaction (:mod:`asperity.interaction`); plain GW by default.
         self.interaction = as_interaction(interaction, adhesive=self.params.adhesive)
@@ -140,13 +154,19 @@ class Model:
         p["friction"] = repr(self.params.friction)
         if self.interaction.active:
             p["interaction"] = repr(self.interaction)
+        if callable(getattr(self.law, "parameters", None)):  # e.g. the Jackson-Green law and its hardness
+            p.update(self.law.parameters())
         return p
 
-    def _result(self, d, sums) -> CurveResult:
+    def _result(self, d, sums, d_local=None) -> CurveResult:
+        """The curve at (apparent) separations ``d``; ``d_local``: the separations the asperities feel."""
         contacts, P, F, area = (sums[:, i] for i in range(4))
+        d_local = d if d_local is None else d_local
+        plastic = (self.law.plastic_fraction(d_local, self.heights) if hasattr(self.law, "plastic_fraction")
+                   else None)
         return CurveResult(d=d, P=P, F=F, mu=friction_coefficient(F, P), area=area,
                            pressure=mean_pressure(P, area, self.params.nu), contacts=contacts,
-                           parameters=self._parameters())
+                           parameters=self._parameters(), plastic=plastic)
 
     # -- curves ---------------------------------------------------------------------
     def separation_curve(self, d) -> CurveResult:
@@ -160,7 +180,7 @@ class Model:
         tab = self.tabulation(float(d.min()), max(reach, 10.0))
         d_loc = np.minimum(self.interaction.local_separation(
             d, lambda x: tuple(s[:, 1] for s in tab.sums(np.minimum(x, reach), order=1))), reach)
-        return self._result(d, tab.sums(d_loc)[0])
+        return self._result(d, tab.sums(d_loc)[0], d_loc)
 
     def pull_off(self, d_max: float | None = None) -> PullOff:
         """Largest tensile force for -3 <= d/sigma <= ``d_max``: :func:`pull_off` for this model (cached).
@@ -202,7 +222,7 @@ class Model:
         d, sums = invert_branch(branch.tab, P, branch.grid, branch.P, branch.dP)
         sums[:, 1] = P  # solved for to rounding; report the load asked for
         # Interaction hook: the apparent separation is the local one less the uniform sinking.
-        return self._result(d - self.interaction.shift(P), sums)
+        return self._result(d - self.interaction.shift(P), sums, d)
 
 
 def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,

@@ -45,12 +45,14 @@ from . import groups
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import as_float_array, check_nonnegative, check_positive, check_scalar_positive
 from .curves import CurveResult, Model, PullOff
+from .elastic_plastic import LAWS, plastic_fraction
 from .friction_stress import ConstantShear, FrictionLaw
 from .heights import GAUSSIAN, HeightDistribution
 from .interaction import interaction_for_surface
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
-from .quantities import CURVE_COLUMNS
+from .plasticity import PLASTIC_THRESHOLD, ContactPlasticity, check_yield, plastic_share, resolve_plasticity
+from .quantities import CURVE_COLUMNS, PLASTIC_COLUMNS
 from .regimes import adhesion_regime, fuller_tabor_parameter, maugis_parameter, tabor_parameter
 from .surface import Surface, surface_from_groups
 from .units import to_si
@@ -61,6 +63,7 @@ __all__ = [
     "PhysicalCurve",
     "PhysicalPullOff",
     "PHYSICAL_COLUMNS",
+    "PHYSICAL_PLASTIC_COLUMNS",
     "surface_from_groups",
     "work_of_adhesion_from_gamma",
     "tabor_parameter",
@@ -72,6 +75,8 @@ __all__ = [
 #: Columns of a :class:`PhysicalCurve`: attribute -> (CSV/DataFrame column, SI unit, meaning),
 #: derived from :data:`asperity.quantities.CURVE_COLUMNS`.
 PHYSICAL_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in CURVE_COLUMNS.items()}
+#: The optional column ``plastic`` (number of asperities past the critical interference), as above.
+PHYSICAL_PLASTIC_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in PLASTIC_COLUMNS.items()}
 
 
 def _out(x):
@@ -86,7 +91,9 @@ class PhysicalCurve:
 
     ``d`` [m], ``P`` [N], ``F`` [N], ``mu`` [-], ``area`` [m^2], ``pressure`` [Pa] (= P/area),
     ``contacts`` [number of asperities].  ``dimensionless`` is the model's own
-    :class:`~asperity.CurveResult`; ``parameters`` the inputs and groups.
+    :class:`~asperity.CurveResult`; ``parameters`` the inputs and groups.  ``plastic``
+    [number of asperities past the critical interference] is None unless the per-asperity
+    law is elastic-plastic (``plasticity='jackson-green'``); then it is the last column.
     """
 
     d: np.ndarray
@@ -99,6 +106,7 @@ class PhysicalCurve:
     dimensionless: CurveResult = field(repr=False, compare=False)
     parameters: dict = field(default_factory=dict, compare=False)
     nominal_area: float = math.nan
+    plastic: np.ndarray | None = None
 
     @property
     def area_fraction(self) -> np.ndarray:
@@ -109,13 +117,19 @@ class PhysicalCurve:
     def __len__(self) -> int:
         return int(np.size(self.d))
 
+    def _column_table(self) -> dict:
+        if self.plastic is None:
+            return PHYSICAL_COLUMNS
+        return {**PHYSICAL_COLUMNS, **PHYSICAL_PLASTIC_COLUMNS}
+
     def columns(self) -> dict[str, np.ndarray]:
-        """Column name (with unit, e.g. ``'P_N'``) -> array, in the order of :data:`PHYSICAL_COLUMNS`."""
-        return {col: np.asarray(getattr(self, attr)) for attr, (col, _, _) in PHYSICAL_COLUMNS.items()}
+        """Column name (with unit, e.g. ``'P_N'``) -> array, in the order of :data:`PHYSICAL_COLUMNS`
+        (then ``plastic``, if present)."""
+        return {col: np.asarray(getattr(self, attr)) for attr, (col, _, _) in self._column_table().items()}
 
     def to_dataframe(self):
         """The curve as a :class:`pandas.DataFrame` (needs pandas); units in ``attrs['units']``."""
-        units = {col: unit for col, unit, _ in PHYSICAL_COLUMNS.values()}
+        units = {col: unit for col, unit, _ in self._column_table().values()}
         return columns_to_dataframe(self.columns(), {**self.parameters, "units": units})
 
     def to_csv(self, path_or_buffer=None) -> str | None:
@@ -136,7 +150,7 @@ class PhysicalPullOff:
     dimensionless: PullOff = field(repr=False, compare=False)
 
 
-class PhysicalContact:
+class PhysicalContact(ContactPlasticity):
     r"""A real material against a rigid flat through a real rough surface, in SI units.
 
     Parameters
@@ -165,6 +179,23 @@ class PhysicalContact:
         ``'none'`` (default, plain GW) or ``'cgp2008'``, the mean-field correction of
         Ciavarella, Greenwood & Paggi (2008) over this surface's nominal area (non-adhesive:
         needs ``adhesion=False``); then separations are measured from the undeformed surface.
+    plasticity : str, optional
+        The per-asperity law, a name of :data:`asperity.elastic_plastic.LAWS`: ``'elastic'``
+        (default; Hertz or Maugis-Dugdale) or ``'jackson-green'`` (elastic-plastic, needs a
+        hardness and no adhesion: pass ``adhesion=False``).
+    hardness : float or pint.Quantity, optional
+        Hardness :math:`H` (Pa); default: the material's ``H``.  With the size effect,
+        :math:`H_0` (default: the material's ``H0``).  Gives :attr:`plasticity_index`,
+        :attr:`critical_interference` and, with the elastic law, the yield check.
+    size_effect : bool, optional
+        Nix-Gao indentation size effect, :math:`H = H_0(1 + h^*/\omega)^{1/2}` at each
+        asperity's interference :math:`\omega`.  Default None: on if ``h_star`` is given.
+    h_star : float or pint.Quantity, optional
+        Nix-Gao length :math:`h^*` (m); default: the material's ``h_star``.
+    plastic_threshold : float
+        With the elastic law, a curve on which more than this share of the asperities in
+        contact is past the critical interference warns (:class:`~asperity.PlasticityWarning`);
+        default :data:`~asperity.plasticity.PLASTIC_THRESHOLD` = 0.01.
 
     Examples
     --------
@@ -174,7 +205,9 @@ class PhysicalContact:
     """
 
     def __init__(self, material: Material | str, surface: Surface, *, h=None, friction=None,
-                 adhesion: bool = True, heights: HeightDistribution = GAUSSIAN, interaction=None):
+                 adhesion: bool = True, heights: HeightDistribution = GAUSSIAN, plasticity: str | None = None,
+                 hardness=None, size_effect: bool | None = None, h_star=None,
+                 plastic_threshold: float = PLASTIC_THRESHOLD, interaction=None):
         self.material = as_material(material)
         if not isinstance(surface, Surface):
             raise ValueError(f"surface must be an asperity.surface.Surface, got {surface!r}")
@@ -194,6 +227,17 @@ class PhysicalContact:
         if self.interaction.active and self.gamma > 0:
             raise ValueError(f"interaction {self.interaction.name!r} (Ciavarella, Greenwood & Paggi 2008) is "
                              "derived for non-adhesive contact; pass adhesion=False or interaction='none'")
+        self.law, self.hardness, self.h_star = resolve_plasticity(self.material, plasticity, hardness,
+                                                                  size_effect, h_star)
+        self.plastic_threshold = check_scalar_positive(plastic_threshold, "plastic_threshold", allow_zero=True)
+        if self.plastic_threshold > 1.0:
+            raise ValueError(f"plastic_threshold must lie in [0, 1], got {plastic_threshold!r}")
+        if LAWS[self.law].plastic:
+            if self.gamma > 0.0:
+                raise ValueError(f"plasticity={self.law!r} has no adhesion, but material {self.material.name!r} has "
+                                 f"a work of adhesion w = {self.w:g} J/m^2 (Maugis-Dugdale cannot be combined with a "
+                                 "plastic core consistently): pass adhesion=False")
+            self._law_spec = LAWS[self.law](self.H_over_E, self.h_star / self.surface.sigma_s)  # validated here
 
     def _friction_law(self, friction) -> FrictionLaw | None:
         if friction is None or isinstance(friction, FrictionLaw):
@@ -272,20 +316,25 @@ class PhysicalContact:
 
     @functools.cached_property
     def model(self) -> Model:
-        """The dimensionless :class:`~asperity.Model` with these alpha, beta, gamma, nu, h/b."""
+        """The dimensionless :class:`~asperity.Model` with these alpha, beta, gamma, nu, h/b and law."""
         kwargs = {} if self.friction is None else {"friction": self.friction}
+        if LAWS[self.law].plastic:
+            kwargs["law"] = self._law_spec
         return Model(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b,
                      heights=self.heights, interaction=self.interaction, **kwargs)
 
     def parameters(self) -> dict:
         """Inputs, groups and scales (SI units) as a flat dict."""
         s = self.surface
+        psi = None if self.hardness is None else self.plasticity_index
         return {"material": self.material.name, "E_star_Pa": self.E_star, "G_Pa": self.G, "nu": self.nu,
                 "b_m": self.b, "w_J_m2": self.w, "h_m": self.h, "sigma_s_m": s.sigma_s, "R_m": s.R,
                 "eta_per_m2": s.eta, "area_m2": s.area, "N": self.N, "alpha": self.alpha, "beta": self.beta,
                 "gamma": self.gamma, "lambda": self.lam, "force_scale_N": self.force_scale,
                 "area_scale_m2": self.area_scale, "friction": repr(self.model.params.friction),
-                "interaction": self.interaction.name}
+                "interaction": self.interaction.name,
+                "law": self.law, "hardness_Pa": self.hardness, "h_star_m": self.h_star, "psi": psi,
+                "critical_interference_m": self.critical_interference}
 
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:
@@ -327,10 +376,15 @@ class PhysicalContact:
         P = curve.P * fs if P is None else P
         with np.errstate(divide="ignore", invalid="ignore"):
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
+        plastic = curve.plastic  # the plastic law's column; the elastic law is only checked
+        if plastic is None and self.u_c is not None:
+            check_yield(plastic_share(plastic_fraction(curve.d, self.u_c, self.heights), curve.contacts),
+                        threshold=self.plastic_threshold, psi=self.plasticity_index,
+                        critical_interference=self.critical_interference, law=self.law, stacklevel=4)
         return PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,
                              mu=curve.mu, area=area, pressure=pressure, contacts=curve.contacts * self.N,
                              dimensionless=curve, parameters=self.parameters(),
-                             nominal_area=self.surface.area)
+                             nominal_area=self.surface.area, plastic=None if plastic is None else plastic * self.N)
 
 
 def _adhesion_w(body: Material, adhesion: bool) -> float:

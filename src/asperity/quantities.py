@@ -17,10 +17,11 @@ A :class:`Quantity` carries
   log axes, log sliders, fitted in log10), a ``typical`` range for sliders and sweeps,
   the ``default`` and the ``source`` (equation of the paper, or reference).
 
-Three registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
-:class:`asperity.Model`), :data:`PHYSICAL_PARAMETERS` (inputs of a physical contact, in SI
-units) and :data:`CURVE_COLUMNS` (the columns of every curve).  :func:`quantity` looks a
-name up in all three.
+Four registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
+:class:`asperity.Model` and of its per-asperity laws), :data:`PHYSICAL_PARAMETERS` (inputs
+of a physical contact, in SI units), :data:`CURVE_COLUMNS` (the columns of every curve) and
+:data:`PLASTIC_COLUMNS` (the column a curve gains when the per-asperity law or the material
+has a critical interference).  :func:`quantity` looks a name up in all four.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ __all__ = [
     "PHYSICAL_PARAMETERS",
     "CURVE_COLUMNS",
     "VALIDATION_COLUMNS",
+    "PLASTIC_COLUMNS",
     "quantity",
 ]
 
@@ -116,6 +118,13 @@ MODEL_PARAMETERS = _registry(
              typical=(1.0, 1e3), default=28.0, source="Eq 3, Hurtado & Kim 1999"),
     Quantity("a2", r"\bar a_2", "Hurtado-Kim contact radius a/b where region 2 ends (> a1)", lo=0.0, log=True,
              typical=(1e3, 1e7), default=8.0e4, source="Eq 3, Hurtado & Kim 1999"),
+    Quantity("H_over_E", "H/E^*", "hardness over composite modulus H/E* of the elastic-plastic law "
+             "(H0/E* with the size effect); plasticity index psi = alpha/(H/E*)", lo=0.0, hi=0.142,
+             hi_inclusive=True, log=True, typical=(1e-4, 0.14),
+             source="Jackson & Green 2005 (S_y = H/2.84); docs/plasticity.md"),
+    Quantity("h_star_over_sigma", r"h^*/\sigma", "Nix-Gao size-effect length over sigma, h*/sigma; 0 = no "
+             "size effect", lo=0.0, lo_inclusive=True, log=True, typical=(1e-2, 1e4), default=0.0,
+             source="Nix & Gao 1998; docs/plasticity.md"),
 )
 
 #: Inputs of a physical contact (:class:`asperity.physical.PhysicalContact`), SI units.
@@ -140,6 +149,12 @@ PHYSICAL_PARAMETERS = _registry(
              log=True, typical=(1e-11, 1e-8), source="Eq 14"),
     Quantity("tau", r"\tau", "interfacial shear strength", unit="Pa", si_name="tau_Pa", si_unit="Pa", lo=0.0,
              log=True, typical=(1e5, 1e10)),
+    Quantity("hardness", "H", "hardness (mean pressure of a fully plastic contact; H0 with the size effect)",
+             unit="Pa", si_name="H_Pa", si_unit="Pa", lo=0.0, log=True, typical=(1e7, 1.5e11),
+             source="materials table; docs/plasticity.md"),
+    Quantity("h_star", "h^*", "Nix-Gao size-effect length (indentation size effect)", unit="m",
+             si_name="h_star_m", si_unit="m", lo=0.0, lo_inclusive=True, log=True, typical=(1e-8, 1e-5),
+             source="Nix & Gao 1998"),
 )
 
 #: Columns of every curve (dimensionless, and SI for a physical contact), in output order.
@@ -159,6 +174,14 @@ CURVE_COLUMNS = _registry(
              si_meaning="mean pressure over the real contact area, P/area (NaN without contact)", log=True),
     Quantity("contacts", "n/N", "fraction of asperities in contact n/N", si_name="contacts", si_unit="1",
              si_meaning="number of asperities in contact"),
+)
+
+#: The column a curve gains when its per-asperity law (Jackson-Green) or, for a physical
+#: contact, its material has a critical interference (asperities past it have yielded).
+PLASTIC_COLUMNS = _registry(
+    Quantity("plastic", "n_p/N", "fraction of asperities past the critical interference (yielded) n_p/N",
+             si_name="plastic", si_unit="1", si_meaning="number of asperities past the critical interference "
+             "(yielded)", source="Jackson & Green 2005; docs/plasticity.md"),
 )
 
 
@@ -208,8 +231,8 @@ def quantity(name: str) -> Quantity:
     ValueError
         For an unknown name; the message lists the known ones.
     """
-    for registry in (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS):
+    for registry in (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS, PLASTIC_COLUMNS):
         if name in registry:
             return registry[name]
-    known = sorted({*MODEL_PARAMETERS, *PHYSICAL_PARAMETERS, *CURVE_COLUMNS})
+    known = sorted({*MODEL_PARAMETERS, *PHYSICAL_PARAMETERS, *CURVE_COLUMNS, *PLASTIC_COLUMNS})
     raise ValueError(f"unknown quantity {name!r}; known: {', '.join(known)}")

@@ -54,6 +54,26 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def run_with_notes(run, args) -> None:
+    """Run a command; print each of the library's warnings (:class:`asperity.AsperityWarning`)
+    as one ``asperity: note:`` line on standard error, and pass any other warning on."""
+    import warnings
+
+    from .._warnings import AsperityWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", AsperityWarning)
+        try:
+            run(args)
+        finally:
+            notes = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, AsperityWarning)))
+            others = [w for w in caught if not issubclass(w.category, AsperityWarning)]
+    for w in others:
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    for note in notes:
+        print(f"asperity: note: {note}", file=sys.stderr)
+
+
 def main(argv=None) -> int:
     """Run the command line on ``argv`` (default ``sys.argv[1:]``); return the exit status."""
     parser = build_parser()
@@ -63,7 +83,7 @@ def main(argv=None) -> int:
         if args.command is None:
             parser.print_help()
             return 2
-        COMMANDS[args.command].run(args)
+        run_with_notes(COMMANDS[args.command].run, args)
     except (UsageError, ValueError, MissingDependency) as exc:  # ValueError: the library's own checks
         print(f"asperity: error: {exc}", file=sys.stderr)
         return 2

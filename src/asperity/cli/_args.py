@@ -5,7 +5,9 @@
   integer, a non-finite value) are errors, never repaired, and no list may hold more than
   :data:`MAX_POINTS` points (checked before anything is allocated).
 * :func:`quantity` and :func:`quantity_list`: the same with units (``2nm``, ``1mN:1N:50``).
-* The shared argument groups: :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b),
+* The shared argument groups: :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b, and
+  the per-asperity law: ``--law``, ``--hardness``, ``--h-star``, ``--size-effect``,
+  ``--plastic-threshold``),
   :func:`add_contact_arguments` (a physical contact: material and surface),
   :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``), with help texts from
   :mod:`asperity.quantities`; and what builds the model from them:
@@ -20,7 +22,7 @@ from __future__ import annotations
 import argparse
 import os
 
-from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
+from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS, PLASTIC_COLUMNS
 
 __all__ = [
     "MAX_POINTS",
@@ -41,6 +43,7 @@ __all__ = [
     "model_from_args",
     "contact_from_args",
     "title",
+    "LAW_NAMES",
     "UNITS",
     "MODEL_HELP",
 ]
@@ -50,14 +53,21 @@ MAX_POINTS = 10**6
 
 #: Output columns and units, for the epilog of ``--help`` (from :data:`asperity.quantities.CURVE_COLUMNS`).
 UNITS = ("\n".join(f"  {name:9s} {q.meaning}" for name, q in CURVE_COLUMNS.items())
+         + "".join(f"\n  {name:9s} {q.meaning} (with --law jackson-green)" for name, q in PLASTIC_COLUMNS.items())
          + "\nWith --material (SI):\n"
-         + "\n".join(f"  {q.si_name:11s} [{q.si_unit}] {q.si_meaning}" for q in CURVE_COLUMNS.values()))
+         + "\n".join(f"  {q.si_name:11s} [{q.si_unit}] {q.si_meaning}" for q in CURVE_COLUMNS.values())
+         + "".join(f"\n  {q.si_name:11s} [{q.si_unit}] {q.si_meaning} (with --law jackson-green)"
+                   for q in PLASTIC_COLUMNS.values()))
 
 #: ``--help`` text of each model parameter (from :data:`asperity.quantities.MODEL_PARAMETERS`).
 MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", "gamma", "nu", "h_over_b")}
 
 #: The physical-contact options, in the order they are listed in messages.
 CONTACT_OPTIONS = ("material", "sigma", "radius", "density", "area")
+
+#: Names of the per-asperity laws, as :data:`asperity.elastic_plastic.LAWS` lists them (that
+#: module loads SciPy, which ``--help`` must not; a test keeps the two equal).
+LAW_NAMES = ("elastic", "jackson-green")
 
 
 class UsageError(Exception):
@@ -225,6 +235,10 @@ def output_dir(text: str) -> str:
 
 
 # -- argument groups -------------------------------------------------------------------------
+def _meaning(name: str) -> str:
+    return PHYSICAL_PARAMETERS[name].meaning
+
+
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     """The dimensionless model parameters: ``--alpha --beta --gamma --nu --h-over-b``."""
     g = parser.add_argument_group("model parameters (dimensionless), or a physical contact below")
@@ -233,10 +247,23 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
     g.add_argument("--nu", type=float, default=None, help=MODEL_HELP["nu"])
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=1.0, help=MODEL_HELP["h_over_b"])
-
-
-def _meaning(name: str) -> str:
-    return PHYSICAL_PARAMETERS[name].meaning
+    p = parser.add_argument_group("per-asperity law and plasticity (docs/plasticity.md)")
+    p.add_argument("--law", metavar="NAME", default=None,
+                   help=f"per-asperity law: {' or '.join(LAW_NAMES)} (default elastic: Hertz, or Maugis-Dugdale "
+                        "with adhesion; jackson-green: elastic-plastic, no adhesion)")
+    hardness, h_star = MODEL_PARAMETERS["H_over_E"], MODEL_PARAMETERS["h_star_over_sigma"]
+    p.add_argument("--hardness", metavar="H", default=None,
+                   help=f"hardness of the asperities: {hardness.meaning} ({hardness.range_text()}); with --material "
+                        f"the {_meaning('hardness')} as a pressure with a unit, e.g. 188MPa (default: the materials "
+                        "table)")
+    p.add_argument("--h-star", dest="h_star", metavar="H_STAR", default=None,
+                   help=f"{h_star.meaning} ({h_star.range_text()}); with --material a length, e.g. 1.6um; turns "
+                        "the size effect on, --hardness then being H0")
+    p.add_argument("--size-effect", dest="size_effect", action="store_true",
+                   help="with --material: the Nix-Gao size effect with H0 and h* from the materials table")
+    p.add_argument("--plastic-threshold", dest="plastic_threshold", type=float, default=None,
+                   help="with --material and the elastic law: note when more than this share of the asperities in "
+                        "contact is past the critical interference (default 0.01)")
 
 
 def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
@@ -311,27 +338,49 @@ def is_physical(args) -> bool:
     return False
 
 
-def model_from_args(args):
-    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b``."""
-    from ..curves import Model
+def _number(text, name: str):
+    """A dimensionless option's text as a float (None stays None)."""
+    if text is None:
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        raise UsageError(f"{name}: expected a number (dimensionless, without --material), got {_show(text)}") from None
 
+
+def model_from_args(args):
+    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b`` and ``--law --hardness --h-star``."""
+    from ..curves import Model
+    from ..elastic_plastic import make_law
+
+    for option, value in (("--size-effect", args.size_effect or None), ("--plastic-threshold", args.plastic_threshold)):
+        if value is not None:
+            raise UsageError(f"{option} applies to a physical contact (--material ...); without it give "
+                             "--hardness H/E* and --h-star h*/sigma")
+    law = make_law(args.law or "elastic", H_over_E=_number(args.hardness, "--hardness"),
+                   h_star_over_sigma=_number(args.h_star, "--h-star"))
     nu = 0.3 if args.nu is None else args.nu
-    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b)
+    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b, law=law)
 
 
 def contact_from_args(args):
-    """The :class:`asperity.physical.PhysicalContact` of the physical-contact group."""
+    """The :class:`asperity.physical.PhysicalContact` of the physical-contact and plasticity options."""
     from ..physical import PhysicalContact, Surface
 
     surface = Surface(quantity(args.sigma, "m", "--sigma"), quantity(args.radius, "m", "--radius"),
                       quantity(args.density, "1/m^2", "--density"), quantity(args.area, "m^2", "--area"))
-    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion)
+    kwargs = {} if args.plastic_threshold is None else {"plastic_threshold": args.plastic_threshold}
+    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion, plasticity=args.law,
+                           hardness=None if args.hardness is None else quantity(args.hardness, "Pa", "--hardness"),
+                           h_star=None if args.h_star is None else quantity(args.h_star, "m", "--h-star"),
+                           size_effect=True if args.size_effect else None, **kwargs)
 
 
 def title(args) -> str:
     """One line naming the contact or the model parameters (plot titles)."""
+    law = "" if args.law in (None, "elastic") else f", {args.law}"
     if args.material:
         return (f"{args.material}: sigma_s={args.sigma}, R={args.radius}, eta={args.density}, "
-                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}")
+                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}{law}")
     return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma or 0:g}, "
-            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}")
+            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}{law}")

@@ -48,10 +48,12 @@ Conventions (all quantities per asperity, i.e. divided by ``N``)
 
 Modules mirror the ones they check: :mod:`.maugis_dugdale` and :mod:`.maugis_dugdale_branch`
 (mpmath), :mod:`.friction_stress`, :mod:`.groups` and :mod:`.multi_asperity` (``gw_moment``,
-``separation_point``, ``load_point``, ``pull_off``); :mod:`.common` holds mpmath and the
+``separation_point``, ``load_point``, ``pull_off``), :mod:`.elastic_plastic` (the
+Jackson-Green asperity with the Nix-Gao size effect and its integrals); :mod:`.common` holds mpmath and the
 input checks.  This package re-exports their public names.
 """
 
+from .elastic_plastic import jg_asperity, jg_critical_penetration, jg_load_point, jg_separation_point
 from .friction_stress import hk_tau
 from .groups import conversion_factors
 from .maugis_dugdale import md_curve, md_lambda_c
@@ -62,6 +64,10 @@ __all__ = [
     "conversion_factors",
     "gw_moment",
     "hk_tau",
+    "jg_asperity",
+    "jg_critical_penetration",
+    "jg_load_point",
+    "jg_separation_point",
     "load_point",
     "md_branch_end",
     "md_curve",
