@@ -109,3 +109,26 @@ def test_missing_optional_dependency_is_one_line(capsys, monkeypatch, tmp_path, 
     code, out, err = run(capsys, *(a.replace("{tmp}", str(tmp_path)) for a in argv))
     assert one_line_error(code, err, f"needs {module}: pip install 'asperity[{extra}]'")
     assert out == "" and list(tmp_path.iterdir()) == []
+
+
+def test_library_warnings_become_one_note_line_each(capsys):
+    """Every command prints the library's warnings (AsperityWarning) as notes, once each; others pass on."""
+    import warnings
+
+    from asperity import AsperityWarning, PlasticityWarning
+    from asperity.cli import run_with_notes
+
+    def run(args):
+        warnings.warn(PlasticityWarning("yielded"), stacklevel=1)
+        warnings.warn(PlasticityWarning("yielded"), stacklevel=1)
+        warnings.warn(AsperityWarning("other note"), stacklevel=1)
+
+    run_with_notes(run, None)
+    err = capsys.readouterr().err.splitlines()
+    assert err == ["asperity: note: yielded", "asperity: note: other note"]
+
+    def foreign(args):
+        warnings.warn("not ours", RuntimeWarning, stacklevel=1)
+
+    with pytest.raises(RuntimeWarning, match="not ours"):  # filterwarnings=error still applies to others
+        run_with_notes(foreign, None)
