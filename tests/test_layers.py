@@ -30,9 +30,10 @@ LAYERS = [
     ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch"}),
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
-    ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),
-    ("physical", {"materials", "physical", "surface", "regimes", "topography"}),
-    ("applications", {"fit", "sweeps", "validation"}),
+    ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search",
+                "cycle_result", "instrument"}),
+    ("physical", {"materials", "physical", "surface", "regimes", "topography", "physical_cycle"}),
+    ("applications", {"fit", "sweeps", "validation", "cycle_plot"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]
 #: The independent slow path: imports nothing else from asperity, and nothing imports it.

@@ -12,7 +12,9 @@ Layers, each importing only downward:
   :mod:`~asperity.heights`
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
   :mod:`~asperity.multi_asperity`
-* curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
+* curves: :mod:`~asperity.curves`; loading-unloading cycles: :mod:`~asperity.cycle`
+  (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); the paper's figures:
+  :mod:`~asperity.studies`;
   the command line: :mod:`~asperity.cli`
 
 Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
@@ -36,6 +38,9 @@ _EXPORTS = {
     "load_curve": "curves",
     "pull_off": "curves",
     "separation_curve": "curves",
+    "CycleResult": "cycle",
+    "PreloadCurve": "cycle",
+    "preload_curve": "cycle",
     "ConstantShear": "friction_stress",
     "HurtadoKim": "friction_stress",
     "GAUSSIAN": "heights",
@@ -58,6 +63,7 @@ _SUBMODULES = (
     "asperity_law",
     "cli",
     "curves",
+    "cycle",
     "dmt",
     "friction_stress",
     "groups",
@@ -67,7 +73,9 @@ _SUBMODULES = (
     "materials",
     "maugis_dugdale",
     "multi_asperity",
+    "instrument",
     "physical",
+    "physical_cycle",
     "quadrature",
     "quantities",
     "reference",
@@ -84,6 +92,9 @@ __all__ = [
     "load_curve",
     "pull_off",
     "separation_curve",
+    "CycleResult",
+    "PreloadCurve",
+    "preload_curve",
     "ConstantShear",
     "HurtadoKim",
     "GAUSSIAN",

@@ -1,0 +1,256 @@
+r"""Searches on the branches of a cycle: closest approach under a preload, pull-off on retraction.
+
+* :func:`closest_approach`: the separation :math:`\bar d_{min}` where the approach force reaches
+  the preload, the largest compressive load of the cycle: load control on the approach branch
+  (:func:`asperity.load_control.start_separation`, :func:`~asperity.load_control.bracket_low`,
+  :func:`~asperity.load_control.stable_branch`, :func:`~asperity.load_control.invert_branch`
+  on the tabulation of :class:`~asperity.cycle_integrals.ApproachLaw`).
+* :func:`retract_pull_off`: the most tensile force on retraction from :math:`\bar d_{min}` to
+  :math:`\bar d_{max}`, vectorised over :math:`\bar d_{min}`.  In the transition zone
+  (:math:`\bar d - \bar d_{min} <` reach) the force is searched on a Chebyshev grid and the
+  minimum refined on :math:`dP/d\bar d = 0` (Illinois, all preloads at once); beyond it the
+  retraction force is the paper's curve, searched on one grid shared by all preloads and
+  refined by :func:`asperity.load_control.find_pull_off`.  The retraction force is never more
+  tensile than the paper's curve, and reaches it once the whole transition zone lies before
+  the paper's pull-off point: the pull-off grows with the preload and saturates at the
+  paper's (Table 1).
+* :func:`first_zero`: where a branch's force first changes sign along the path.
+
+References
+----------
+.. [1] K. N. G. Fuller, D. Tabor, Proc. R. Soc. A 345 (1975) 327.
+.. [2] Adams et al., Eq (18), Table 1.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy import optimize
+
+from .cycle_integrals import CycleIntegrals, chebyshev_points
+from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
+from .tabulation import D_MIN
+
+__all__ = ["closest_approach", "retract_pull_off", "first_zero", "bracketed_roots"]
+
+_GRID_STEP = 0.02  # sigma, as the paper's pull-off search
+
+
+def closest_approach(ci: CycleIntegrals, preload, d_max: float):
+    r"""Closest approach :math:`\bar d_{min}` for each preload: :math:`P^{app}(\bar d_{min}) = P_{pre}`.
+
+    The first separation, coming from deep contact, where the approach force equals the
+    preload (the stable branch of approach, :math:`dP^{app}/d\bar d < 0`).
+
+    Parameters
+    ----------
+    ci : CycleIntegrals
+        The cycle's integrals.
+    preload : ndarray
+        Preloads :math:`P/(NGb^2) > 0` (validated by the caller), 1-D.
+    d_max : float
+        Start of the approach, :math:`d/\sigma`.
+
+    Returns
+    -------
+    ndarray
+        :math:`\bar d_{min}` per preload.
+
+    Raises
+    ------
+    ValueError
+        If a preload needs a separation below ``D_MIN`` = -1e4 (beyond the model's domain), or
+        is reached only beyond ``d_max``.
+    """
+    P_max = float(preload.max())
+    try:
+        d_lo = start_separation(ci.params, P_max, d_max)
+        d_lo, tab = bracket_low(ci.approach_tab(d_lo, d_max), P_max, d_lo, d_max)
+    except ValueError:
+        raise ValueError(f"preload = {P_max:g} (in N G b^2) is beyond the model's domain: it needs a separation "
+                         f"below d/sigma = {D_MIN:g}") from None
+    ci.set_approach_tab(tab)
+    branch = stable_branch(tab, d_lo, d_max)
+    floor = branch.P[-1]
+    if preload.min() < floor:
+        raise ValueError(f"preload must be >= {floor:.6g} here: a smaller one is reached only beyond d_max = "
+                         f"{d_max:.6g} (the start of the approach); got {preload.min():g}")
+    d, _ = invert_branch(branch.tab, preload, branch.grid, branch.P, branch.dP)
+    return d
+
+
+def _zone_minimum(ci: CycleIntegrals, d_min, d_max: float):
+    """Most tensile retraction force in the transition zone and where: (P, d), per d_min."""
+    n = d_min.size
+    span = np.minimum(ci.reach, d_max - d_min)
+    m = int(np.clip(np.ceil(span.max() / _GRID_STEP) + 1, 33, 1001))
+    x = chebyshev_points(m)
+    w = span[:, None] * x[None, :]
+    dd = d_min[:, None] + w
+    P = ci.zone_sums(dd.ravel(), np.repeat(d_min, m))[0][:, 1].reshape(n, m)
+    k = np.argmin(P, axis=1)
+    rows = np.arange(n)
+    best_P, best_d = P[rows, k], dd[rows, k]
+    inner = np.flatnonzero((k > 0) & (k < m - 1))
+    if inner.size:
+        a, b = dd[inner, k[inner] - 1], dd[inner, k[inner] + 1]
+        dmin_in = d_min[inner]
+
+        def slope(x):
+            return ci.zone_sums(x, dmin_in, order=1)[1][:, 1]
+
+        x_star = bracketed_roots(slope, a, b)
+        P_star = ci.zone_sums(x_star, dmin_in)[0][:, 1]
+        better = P_star < best_P[inner]
+        best_P[inner[better]] = P_star[better]
+        best_d[inner[better]] = x_star[better]
+    return best_P, best_d
+
+
+def bracketed_roots(f, a, b, fa=None, fb=None, tol=1e-13, iterations=100):
+    """Roots of ``f`` (vectorised) in the brackets [a, b], by the Illinois method.
+
+    Parameters
+    ----------
+    f : callable
+        ``f(x)`` for a 1-D array ``x``, evaluated only strictly inside the brackets when
+        ``fa`` and ``fb`` are given (useful where ``f`` is one-sided at an end, e.g. a kink).
+    a, b : ndarray
+        Bracket ends, ``a < b``, 1-D.
+    fa, fb : ndarray, optional
+        ``f`` at the ends (default: evaluated).
+    tol : float
+        Relative width of the final bracket.
+
+    Returns
+    -------
+    ndarray
+        One root per bracket; where ``f(a)`` and ``f(b)`` have the same sign, the end with the
+        smaller ``|f|``.
+    """
+    a = np.array(a, dtype=float, ndmin=1)
+    b = np.array(b, dtype=float, ndmin=1)
+    fa = f(a) if fa is None else np.array(fa, dtype=float, ndmin=1)
+    fb = f(b) if fb is None else np.array(fb, dtype=float, ndmin=1)
+    sa = np.sign(fa)
+    x = np.where(np.abs(fa) <= np.abs(fb), a, b)
+    active = np.flatnonzero(sa * np.sign(fb) < 0)
+    side = np.zeros(a.size)
+    for _ in range(iterations):
+        if active.size == 0:
+            break
+        A, B, FA, FB = a[active], b[active], fa[active], fb[active]
+        c = (A * FB - B * FA) / (FB - FA)
+        c = np.where((c > A) & (c < B), c, 0.5 * (A + B))
+        fc = f(c)
+        move_a = np.sign(fc) == sa[active]  # the root lies between c and b
+        a[active] = np.where(move_a, c, A)
+        fa[active] = np.where(move_a, fc, FA)
+        b[active] = np.where(move_a, B, c)
+        fb[active] = np.where(move_a, FB, fc)
+        # Illinois: halve the kept end's value when the same end moved twice in a row.
+        s = np.where(move_a, -1.0, 1.0)
+        stale = side[active] == s
+        fb[active] = np.where(stale & move_a, 0.5 * fb[active], fb[active])
+        fa[active] = np.where(stale & ~move_a, 0.5 * fa[active], fa[active])
+        side[active] = s
+        x[active] = c
+        done = (fc == 0) | ((b[active] - a[active]) <= tol * np.maximum(1.0, np.abs(c)))
+        active = active[~done]
+    return x
+
+
+def _paper_minimum(ci: CycleIntegrals, d_lo, d_max: float):
+    """Most tensile force of the paper's curve on [d_lo_i, d_max] and where: (P, d), per d_lo."""
+    n = d_lo.size
+    best_P = np.full(n, np.inf)
+    best_d = np.full(n, np.nan)
+    run = np.flatnonzero(d_lo < d_max)
+    if run.size == 0:
+        return best_P, best_d
+    lo = float(d_lo[run].min())
+    tab = ci.paper_tab(lo, d_max)
+    m = int(min(4000, np.ceil((d_max - lo) / _GRID_STEP))) + 1
+    grid = np.linspace(lo, d_max, m)
+    Pg = tab.sums(grid)[0][:, 1]
+    P_lo = tab.sums(d_lo[run])[0][:, 1]
+    refined: dict[int, PullOff] = {}
+    for i, P0 in zip(run, P_lo, strict=True):
+        first = int(np.searchsorted(grid, d_lo[i], side="right"))
+        g = np.concatenate([[d_lo[i]], grid[first:]])
+        p = np.concatenate([[P0], Pg[first:]])
+        k = int(np.argmin(p))
+        if 0 < k < g.size - 1:
+            key = first + k - 1 if k >= 2 else -1 - i  # a bracket on the shared grid is refined once
+            if key not in refined:
+                refined[key] = find_pull_off(tab, g[k - 1], g[k + 1], g[k - 1:k + 2], p[k - 1:k + 2])
+            po = refined[key]
+            if po.exists and -po.force < p[k]:
+                best_P[i], best_d[i] = -po.force, po.d
+                continue
+        best_P[i], best_d[i] = p[k], g[k]
+    return best_P, best_d
+
+
+def retract_pull_off(ci: CycleIntegrals, d_min, d_max: float) -> list[PullOff]:
+    r"""Pull-off force on retraction from each :math:`\bar d_{min}` to :math:`\bar d_{max}`.
+
+    .. math::
+        P_{off}(\bar d_{min}) = \max\Big(0,\ -\min_{\bar d_{min} \le \bar d \le \bar d_{max}}
+            P^{ret}(\bar d; \bar d_{min})\Big)
+
+    Parameters
+    ----------
+    ci : CycleIntegrals
+        The cycle's integrals.
+    d_min : ndarray
+        Closest approaches :math:`d/\sigma`, 1-D, each ``< d_max``.
+    d_max : float
+        End of retraction, :math:`d/\sigma`.
+
+    Returns
+    -------
+    list of PullOff
+        ``force`` :math:`|P|/(NGb^2)`, separation ``d`` and ``exists`` per ``d_min``
+        (``PullOff(0.0, nan, False)`` where the retraction force stays compressive).
+    """
+    d_min = np.asarray(d_min, dtype=float).ravel()
+    if not ci.params.adhesive:
+        return [PullOff(0.0, float("nan"), False) for _ in d_min]
+    P_best = np.full(d_min.size, np.inf)
+    d_best = np.full(d_min.size, np.nan)
+    if ci.reach > 0:
+        P_best, d_best = _zone_minimum(ci, d_min, d_max)
+    P_pap, d_pap = _paper_minimum(ci, d_min + ci.reach, d_max)
+    take = P_pap < P_best
+    P_best = np.where(take, P_pap, P_best)
+    d_best = np.where(take, d_pap, d_best)
+    return [PullOff(float(-P), float(d), True) if P < 0 else PullOff(0.0, float("nan"), False)
+            for P, d in zip(P_best, d_best, strict=True)]
+
+
+def first_zero(force, d, P):
+    r"""Where the force :math:`P(\bar d)` first changes sign along a path, or NaN.
+
+    Parameters
+    ----------
+    force : callable
+        ``force(d)`` -> the force at one separation (float).
+    d, P : ndarray
+        The path's separations in path order and the force there.
+
+    Returns
+    -------
+    float
+        The separation of the first sign change, refined by Brent's method (``xtol`` 1e-13);
+        NaN if the force keeps its sign.
+    """
+    s = np.sign(P)
+    change = np.flatnonzero((s[:-1] * s[1:] < 0) | ((s[:-1] != 0) & (s[1:] == 0)))
+    if change.size == 0:
+        return float("nan")
+    i = int(change[0])
+    if P[i + 1] == 0:
+        return float(d[i + 1])
+    lo, hi = sorted((d[i], d[i + 1]))
+    return float(optimize.brentq(force, lo, hi, xtol=1e-13, rtol=1e-15))
