@@ -120,9 +120,9 @@ def _turning_point(ci: CycleIntegrals, d_min, preload, d_max: float) -> float:
 def _path_grid(d_min: float, d_max: float, reach: float, n: int):
     """``n`` separations from d_min to d_max, a quarter (at least) in the transition zone."""
     d_j = d_min + reach
-    if reach <= 0 or d_j >= d_max:
+    if reach <= 0 or d_j >= d_max or n < 3:
         return np.linspace(d_min, d_max, n)
-    m = int(np.clip(round(n * reach / (d_max - d_min)), max(2, n // 4), n - 2))
+    m = int(np.clip(round(n * reach / (d_max - d_min)), max(2, n // 4), n - 1))
     zone = d_min + reach * chebyshev_points(m)
     return np.concatenate([zone, np.linspace(d_j, d_max, n - m + 1)[1:]])
 
@@ -154,20 +154,21 @@ def compute_cycle(ci: CycleIntegrals, *, d_min=None, preload=None, d_max=None, d
         grid = d
     else:
         grid = _path_grid(d_min, d_max, ci.reach, n)
-    app = ci.approach_sums(grid)[0]
-    ret = ci.retract_sums(grid, d_min)[0]
-    zeros = (_zero_load(lambda x: ci.approach_sums([x])[0][0], grid[::-1], app[::-1]),
-             _zero_load(lambda x: ci.retract_sums([x], d_min)[0][0], grid, ret))
+    spring = not math.isinf(k)
+    app = ci.approach_sums(grid, int(spring))
+    ret = ci.retract_sums(grid, d_min, int(spring))
+    zeros = (_zero_load(lambda x: ci.approach_sums(x, 1), grid[::-1], app[0][::-1]),
+             _zero_load(lambda x: ci.retract_sums(x, d_min, 1), grid, ret[0]))
     loop = ci.loop([d_min], d_max)[0]
     jumps: list[Jump] = []
-    if math.isinf(k):
+    if not spring:
         no_jump = np.zeros(grid.size, dtype=bool)
         order = slice(None, None, -1) if d is None else slice(None)
-        approach = _branch(ci, grid[order], app[order], k, no_jump, parameters)
-        retract = _branch(ci, grid, ret, k, no_jump, parameters)
+        approach = _branch(ci, grid[order], app[0][order], k, no_jump, parameters)
+        retract = _branch(ci, grid, ret[0], k, no_jump, parameters)
         po = retract_pull_off(ci, np.array([d_min]), d_max)[0]
     else:
-        approach, retract, jumps = _measured(ci, grid, d_min, k, parameters)
+        approach, retract, jumps = _measured(ci, grid, app, ret, d_min, k, parameters)
         po = _measured_pull_off(ci, retract, jumps, d_min, d_max)
     lost = sum(j.energy for j in jumps)
     return CycleResult(
@@ -180,12 +181,29 @@ def compute_cycle(ci: CycleIntegrals, *, d_min=None, preload=None, d_max=None, d
 
 def _zero_load(sums_at, d, sums) -> float:
     """Friction where the force first changes sign along a path (NaN if it does not)."""
-    x = first_zero(lambda t: float(sums_at(t)[1]), d, sums[:, 1])
-    return math.nan if math.isnan(x) else float(sums_at(x)[2])
+    _, row = first_zero(sums_at, d, sums[:, 1])
+    return math.nan if row is None else float(row[2])
 
 
-def _measured(ci: CycleIntegrals, grid, d_min: float, k: float, parameters):
-    """The branches as a spring of stiffness k measures them: visited points and jumps."""
+def _rows(points, grid, sums, fn):
+    """The four integrals at ``points``: from ``sums`` (on ``grid``) where a point is a grid point,
+    from ``fn(x)`` elsewhere."""
+    i = np.clip(np.searchsorted(grid, points), 0, grid.size - 1)
+    known = grid[i] == points
+    out = np.empty((points.size, 4))
+    out[known] = sums[i[known]]
+    if not np.all(known):
+        out[~known] = fn(points[~known])
+    return out
+
+
+def _measured(ci: CycleIntegrals, grid, app, ret, d_min: float, k: float, parameters):
+    """The branches as a spring of stiffness k measures them: visited points and jumps.
+
+    ``app`` and ``ret`` are ``[S_0, S_1]`` on the (increasing) ``grid``.
+    """
+    d_top = ci.model.d_top
+
     def f_app(x, order):
         s = ci.approach_sums(x, order)
         return s[0][:, 1], (s[1][:, 1] if order else None)
@@ -194,20 +212,27 @@ def _measured(ci: CycleIntegrals, grid, d_min: float, k: float, parameters):
         s = ci.retract_sums(x, d_min, order)
         return s[0][:, 1], (s[1][:, 1] if order else None)
 
+    def beyond_top(x):  # a jump out lands beyond d_top, where every integral is 0
+        out = np.zeros((x.size, 4))
+        inside = x <= d_top
+        out[inside] = ci.retract_sums(x[inside], d_min)[0]
+        return out
+
     d_j = d_min + ci.reach
-    down = grid[::-1]
-    P, slope = f_app(down, 1)
-    pts_a, jump_a, jumps = spring_path(down, P, slope, slope, k, f_app, branch="approach")
-    P, slope = f_ret(grid, 1)
-    left = slope.copy()
+    down = slice(None, None, -1)
+    pts_a, jump_a, jumps = spring_path(grid[down], app[0][down, 1], app[1][down, 1], app[1][down, 1], k, f_app,
+                                       branch="approach")
+    left = ret[1][:, 1].copy()
     kink = np.flatnonzero(grid == d_j) if ci.reach > 0 else np.array([], dtype=int)
     if kink.size:
         left[kink] = ci.zone_sums(grid[kink], d_min, order=1)[1][:, 1]
-    pts_r, jump_r, more = spring_path(grid, P, left, slope, k, f_ret, branch="retract", d_stop=ci.model.d_top)
+    pts_r, jump_r, more = spring_path(grid, ret[0][:, 1], left, ret[1][:, 1], k, f_ret, branch="retract",
+                                      d_top=d_top)
     jumps = [dataclasses.replace(j, energy=jump_energy(j, f_app, k)) for j in jumps]
-    jumps += [dataclasses.replace(j, energy=jump_energy(j, f_ret, k, kinks=(d_j,))) for j in more]
-    approach = _branch(ci, pts_a, ci.approach_sums(pts_a)[0], k, jump_a, parameters)
-    retract = _branch(ci, pts_r, ci.retract_sums(pts_r, d_min)[0], k, jump_r, parameters)
+    jumps += [dataclasses.replace(j, energy=jump_energy(j, f_ret, k, kinks=(d_j,), d_top=d_top)) for j in more]
+    approach = _branch(ci, pts_a, _rows(pts_a, grid, app[0], lambda x: ci.approach_sums(x)[0]), k, jump_a,
+                       parameters)
+    retract = _branch(ci, pts_r, _rows(pts_r, grid, ret[0], beyond_top), k, jump_r, parameters)
     return approach, retract, jumps
 
 

@@ -46,11 +46,12 @@ def _view(result):
     return branches, pull, xlabel, ylabel, energy
 
 
-def _arrow(ax, x, y, color):
-    """An arrow along the path at its middle point."""
+def _arrow(ax, x, y, color, scale):
+    """An arrow along the path, in the middle of the stretch where the force is not negligible."""
     if x.size < 3:
         return
-    i = x.size // 2
+    busy = np.flatnonzero(np.abs(y) > 1e-2 * scale)
+    i = int(np.clip(busy[busy.size // 2] if busy.size else x.size // 2, 1, x.size - 2))
     ax.annotate("", xy=(x[i + 1], y[i + 1]), xytext=(x[i - 1], y[i - 1]),
                 arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.5, "mutation_scale": 16})
 
@@ -86,6 +87,7 @@ def plot_cycle(result, ax=None, *, title=None):
         ax = fig.subplots()
     branches, pull, xlabel, ylabel, energy = _view(result)
     (xa, Pa, _), (xr, Pr, _) = branches["approach"], branches["retract"]
+    scale = max(np.abs(Pa).max(initial=0.0), np.abs(Pr).max(initial=0.0))
     ax.fill(np.concatenate([xa, xr]), np.concatenate([Pa, Pr]), color="0.8", alpha=0.7, lw=0, label=energy)
     for name, (x, P, jump) in branches.items():
         color = _COLORS[name]
@@ -95,7 +97,7 @@ def plot_cycle(result, ax=None, *, title=None):
             seg = slice(a, b)
             ax.plot(x[seg], P[seg], "-", color=color, lw=1.6, label=name if n == 0 else None)
             if n == 0 or b - a > 2:
-                _arrow(ax, x[seg], P[seg], color)
+                _arrow(ax, x[seg], P[seg], color, scale)
         for i in np.flatnonzero(jump):
             ax.plot(x[i - 1:i + 1], P[i - 1:i + 1], "--", color=color, lw=1.2,
                     label=f"jump ({name})" if i == np.flatnonzero(jump)[0] else None)

@@ -24,8 +24,9 @@ References
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
-from scipy import optimize
 
 from .cycle_integrals import CycleIntegrals, chebyshev_points
 from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
@@ -229,28 +230,52 @@ def retract_pull_off(ci: CycleIntegrals, d_min, d_max: float) -> list[PullOff]:
             for P, d in zip(P_best, d_best, strict=True)]
 
 
-def first_zero(force, d, P):
-    r"""Where the force :math:`P(\bar d)` first changes sign along a path, or NaN.
+def first_zero(sums, d, P):
+    r"""Where the force :math:`P(\bar d)` first changes sign along a path, and the integrals there.
+
+    The first sign change on the path's points brackets the crossing; safeguarded Newton's
+    method (the derivative from ``sums``) refines it to 1e-12, and the integrals are carried to
+    the final point by a first-order Taylor step, as :func:`asperity.load_control.invert_branch` does.
 
     Parameters
     ----------
-    force : callable
-        ``force(d)`` -> the force at one separation (float).
+    sums : callable
+        ``sums(x)`` -> ``[S_0, S_1]`` at separations ``x`` (1-D): the four integrals (contacts,
+        P, F, area) and their derivatives in the separation, shape (x.size, 4) each.
     d, P : ndarray
         The path's separations in path order and the force there.
 
     Returns
     -------
-    float
-        The separation of the first sign change, refined by Brent's method (``xtol`` 1e-13);
-        NaN if the force keeps its sign.
+    x : float
+        The separation of the first sign change (NaN if the force keeps its sign).
+    row : ndarray or None
+        The four integrals there (None if there is no sign change).
     """
     s = np.sign(P)
     change = np.flatnonzero((s[:-1] * s[1:] < 0) | ((s[:-1] != 0) & (s[1:] == 0)))
     if change.size == 0:
-        return float("nan")
+        return float("nan"), None
     i = int(change[0])
-    if P[i + 1] == 0:
-        return float(d[i + 1])
-    lo, hi = sorted((d[i], d[i + 1]))
-    return float(optimize.brentq(force, lo, hi, xtol=1e-13, rtol=1e-15))
+    (lo, P_lo), (hi, P_hi) = sorted(((d[i], P[i]), (d[i + 1], P[i + 1])))
+    x = lo + (hi - lo) * P_lo / (P_lo - P_hi) if P_lo != P_hi else 0.5 * (lo + hi)
+    for _ in range(100):
+        s0, s1 = sums(np.array([x]))
+        f, g = s0[0, 1], s1[0, 1]
+        if f == 0.0:
+            return float(x), s0[0]
+        if np.sign(f) == np.sign(P_lo):
+            lo = x
+        else:
+            hi = x
+        step = -f / g if g != 0.0 else math.nan
+        if math.isfinite(step) and lo <= x + step <= hi:
+            if abs(step) <= 1e-12 * max(1.0, abs(x)):
+                return float(x + step), s0[0] + s1[0] * step
+            x = x + step
+        else:
+            x = 0.5 * (lo + hi)
+        if hi - lo <= 1e-14 * max(1.0, abs(x)):
+            break
+    s0 = sums(np.array([x]))[0]
+    return float(x), s0[0]

@@ -119,7 +119,7 @@ def _folds_inside(gl, gr):
     return np.flatnonzero((gr[:-1] > 0) & (gl[1:] <= 0))
 
 
-def spring_path(d, P, slope_left, slope_right, stiffness, force, *, branch, d_stop=None):
+def spring_path(d, P, slope_left, slope_right, stiffness, force, *, branch, d_top=math.inf):
     r"""The separations a spring-held surface visits along one branch, with its jumps.
 
     Parameters
@@ -138,8 +138,9 @@ def spring_path(d, P, slope_left, slope_right, stiffness, force, *, branch, d_st
         ``x`` on the branch, strictly between path points.
     branch : str
         ``'approach'`` or ``'retract'``.
-    d_stop : float, optional
-        Largest separation a retraction jump may land at (default: no landing beyond the path).
+    d_top : float
+        Separation beyond which every force underflows to 0: a jump out that has not landed
+        before it lands at :math:`\bar d = \bar Z` (default inf).
 
     Returns
     -------
@@ -207,12 +208,10 @@ def spring_path(d, P, slope_left, slope_right, stiffness, force, *, branch, d_st
             raise ValueError(f"the approach jumps into contact from d/sigma = {pts[a]:.6g} at stiffness "
                              f"{k:.6g}: its end d_min = {pts[-1]:.6g} is never a stable state; choose another "
                              "d_min or give a preload")
-        landing = _land_beyond(force, k, Z[a], pts[-1], d_stop)
-        if landing is not None:
-            x, P_to = landing
-            jumps.append(Jump(branch, float(Z[a]), float(pts[a]), x, float(Ps[a]), P_to, math.nan))
-            out_d.append(x)
-            out_jump.append(True)
+        x, P_to = _land_beyond(force, k, Z[a], pts[-1], d_top)
+        jumps.append(Jump(branch, float(Z[a]), float(pts[a]), x, float(Ps[a]), P_to, math.nan))
+        out_d.append(x)
+        out_jump.append(True)
     return np.array(out_d), np.array(out_jump, dtype=bool), jumps
 
 
@@ -222,31 +221,33 @@ def _landing(force, k, Z_fold):
     return f
 
 
-def _land_beyond(force, k, Z_fold, start, d_stop):
-    """Landing of a jump out beyond the path's last point: (d, P), or None past ``d_stop``."""
-    if d_stop is None or not start < d_stop:
-        return None
+def _land_beyond(force, k, Z_fold, start, d_top):
+    """Landing of a jump out beyond the path's last point: (d, P).  Beyond ``d_top`` every force
+    underflows to 0, so a jump that has not landed there lands at d = Z_fold with P = 0."""
     f = _landing(force, k, Z_fold)
     lo, step = start, 1.0
-    while lo < d_stop:
-        hi = min(lo + step, d_stop)
+    while lo < d_top:
+        hi = min(lo + step, d_top)
         if f(np.array([hi]))[0] >= 0:
             x = bracketed_roots(f, np.array([lo]), np.array([hi]))[0]
             return float(x), float(force(np.array([x]), 0)[0][0])
         lo, step = hi, 2.0 * step
-    return None
+    return float(max(Z_fold, d_top)), 0.0
 
 
-def jump_energy(jump: Jump, force, stiffness: float, kinks=()) -> float:
+def jump_energy(jump: Jump, force, stiffness: float, kinks=(), d_top=math.inf) -> float:
     r"""Energy a jump releases, :math:`\int_{d_a}^{d_b}[\bar P - \bar k(\bar d - \bar Z)]\,d\bar d \ge 0`.
 
     Composite 16-point Gauss-Legendre (4 panels between consecutive kinks), the branch's force
-    from ``force(x, 0)``.
+    from ``force(x, 0)``; beyond ``d_top``, where the force is 0, in closed form.
     """
     lo, hi = sorted((jump.d_from, jump.d_to))
+    total = 0.0
+    if hi > d_top:  # P = 0 there: int_{d_top}^{hi} -k (x - Z) dx
+        total -= 0.5 * stiffness * ((hi - jump.d_base) ** 2 - (d_top - jump.d_base) ** 2)
+        hi = d_top
     edges = np.unique(np.concatenate([[lo, hi], [x for x in kinks if lo < x < hi]]))
     x, w = gauss_legendre(16)
-    total = 0.0
     for a, b in zip(edges[:-1], edges[1:], strict=True):
         e = np.linspace(a, b, 5)
         nodes = (e[:-1, None] + np.diff(e)[:, None] * x[None, :]).ravel()
