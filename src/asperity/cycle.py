@@ -47,7 +47,7 @@ from .cycle_integrals import CycleIntegrals, chebyshev_points
 from .cycle_result import BranchCurve, CycleResult, PreloadCurve
 from .cycle_search import closest_approach, first_zero, retract_pull_off
 from .heights import GAUSSIAN
-from .instrument import Jump, base_displacement, jump_energy, spring_path
+from .instrument import Jump, base_displacement, check_stiffness, jump_energy, spring_path
 from .load_control import PullOff
 from .multi_asperity import friction_coefficient, mean_pressure
 from .tabulation import D_MIN
@@ -57,6 +57,7 @@ __all__ = ["BranchCurve", "CycleResult", "PreloadCurve", "cycle", "preload_curve
 
 #: Largest number of points per branch (``n``) or of preloads.
 MAX_POINTS = 10**6
+_CHUNK = 2000  # preloads searched together
 
 
 # -- validation ----------------------------------------------------------------------------
@@ -70,18 +71,6 @@ def _parameters(ci: CycleIntegrals) -> dict:
 
 def _scalar(value, name):
     return float(scalar(as_float_array(value, name), name))
-
-
-def check_stiffness(stiffness) -> float:
-    """``stiffness`` as a float in (0, inf]; ValueError naming it otherwise."""
-    if isinstance(stiffness, float | int | np.floating | np.integer) and not isinstance(stiffness, bool | np.bool_) \
-            and math.isinf(stiffness) and stiffness > 0:
-        return math.inf
-    k = _scalar(stiffness, "stiffness")
-    if not k > 0:
-        raise ValueError(f"stiffness (instrument spring, k sigma/(N G b^2)) must be > 0 (inf: displacement "
-                         f"control; valid range 0 < stiffness <= inf), got {stiffness!r}")
-    return k
 
 
 def _check_points(n):
@@ -295,8 +284,16 @@ def cycle(alpha, beta, gamma=0.0, *, d_min=None, preload=None, d_max=None, d=Non
         Penetration :math:`\bar u_{in}` in :math:`[\bar u_{end}, 0]` at which an approaching asperity
         jumps into contact (default 0: first touch; :math:`\bar u_{end}` gives the paper's
         hysteresis-free reading).
-    nu, h_over_b, friction, heights, law
-        As for :class:`asperity.Model`.
+    nu : float
+        Poisson's ratio, -1 < nu < 0.5 (default 0.3; the paper does not state it).
+    h_over_b : float
+        Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1).
+    friction : FrictionLaw, optional
+        Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
+    heights : HeightDistribution
+        Asperity heights (default: ``Gaussian()``, Eq 19).
+    law : ContactLaw, optional
+        Per-asperity law built for these parameters (default: ``AsperityLaw``).
 
     Returns
     -------
@@ -338,8 +335,11 @@ def compute_preload_curve(ci: CycleIntegrals, preload, *, d_max=None) -> Preload
         raise ValueError(f"preload (largest compressive loads, P/(N G b^2)) must be > 0 (compressive), at most "
                          f"{MAX_POINTS} values; got min {P.min():g}")
     d_min = closest_approach(ci, P, d_max)
-    pos = retract_pull_off(ci, d_min, d_max)
-    loop = ci.loop(d_min, d_max)
+    pos, loop = [], np.empty((P.size, 4))
+    for start in range(0, P.size, _CHUNK):  # bounded memory for long preload lists
+        part = slice(start, start + _CHUNK)
+        pos += retract_pull_off(ci, d_min[part], d_max)
+        loop[part] = ci.loop(d_min[part], d_max)
     return PreloadCurve(preload=P, d_min=d_min, pull_off=np.array([p.force for p in pos]),
                         d_pull_off=np.array([p.d for p in pos]), energy=-loop[:, 1],
                         loop_fraction=np.asarray(ci.loop_fraction(d_min, d_max), dtype=float),
@@ -372,8 +372,16 @@ def preload_curve(preload, alpha, beta, gamma=0.0, *, d_max=None, u_in=0.0, nu=0
         Start and end of each cycle, :math:`d/\sigma` (default :math:`10 - \bar u_{end}`).
     u_in : float
         Jump-in penetration in :math:`[\bar u_{end}, 0]` (default 0).
-    nu, h_over_b, friction, heights, law
-        As for :class:`asperity.Model`.
+    nu : float
+        Poisson's ratio, -1 < nu < 0.5 (default 0.3; the paper does not state it).
+    h_over_b : float
+        Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1).
+    friction : FrictionLaw, optional
+        Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
+    heights : HeightDistribution
+        Asperity heights (default: ``Gaussian()``, Eq 19).
+    law : ContactLaw, optional
+        Per-asperity law built for these parameters (default: ``AsperityLaw``).
 
     Returns
     -------

@@ -212,10 +212,18 @@ class LoopBand:
         h = self.heights
         uniq, inv = np.unique(u_c, return_inverse=True)
         j, nodes, wq, q_c = self._partial(uniq, edge=True)
-        x = d[:, None] + nodes[inv]  # (n, 16)
-        dens = [h.pdf(x)] + [h.pdf_derivative(x, k) for k in range(1, order + 1)]
-        for k in range(order + 1):
-            out[k] += np.einsum("nj,njc->nc", dens[k], wq[inv])
+        if uniq.size * 8 < d.size:  # few distinct cuts (a shared grid): one product per cut
+            for c in range(uniq.size):
+                rows = np.flatnonzero(inv == c)
+                x = d[rows, None] + nodes[c]
+                out[0][rows] += h.pdf(x) @ wq[c]
+                for k in range(1, order + 1):
+                    out[k][rows] += h.pdf_derivative(x, k) @ wq[c]
+        else:
+            x = d[:, None] + nodes[inv]  # (n, 16)
+            dens = [h.pdf(x)] + [h.pdf_derivative(x, k) for k in range(1, order + 1)]
+            for k in range(order + 1):
+                out[k] += np.einsum("nj,njc->nc", dens[k], wq[inv])
         # Whole panels above the cut, on the fixed nodes, grouped by the cut panel.
         z_top = h.z_top
         rows_j = j[inv]

@@ -161,8 +161,24 @@ def bracketed_roots(f, a, b, fa=None, fb=None, tol=1e-13, iterations=100):
     return x
 
 
+def _suffix_argmin(values):
+    """``out[j]`` = index of the smallest of ``values[j:]`` (the first such, counting from j)."""
+    out = np.empty(values.size, dtype=int)
+    best = values.size - 1
+    for j in range(values.size - 1, -1, -1):
+        if values[j] <= values[best]:
+            best = j
+        out[j] = best
+    return out
+
+
 def _paper_minimum(ci: CycleIntegrals, d_lo, d_max: float):
-    """Most tensile force of the paper's curve on [d_lo_i, d_max] and where: (P, d), per d_lo."""
+    """Most tensile force of the paper's curve on [d_lo_i, d_max] and where: (P, d), per d_lo.
+
+    One grid over [min d_lo, d_max] serves every d_lo: the smallest grid value beyond d_lo (a
+    suffix minimum), compared with the force at d_lo itself; an interior minimum is refined
+    by :func:`asperity.load_control.find_pull_off`, once per grid bracket.
+    """
     n = d_lo.size
     best_P = np.full(n, np.inf)
     best_d = np.full(n, np.nan)
@@ -174,22 +190,22 @@ def _paper_minimum(ci: CycleIntegrals, d_lo, d_max: float):
     m = int(min(4000, np.ceil((d_max - lo) / _GRID_STEP))) + 1
     grid = np.linspace(lo, d_max, m)
     Pg = tab.sums(grid)[0][:, 1]
-    P_lo = tab.sums(d_lo[run])[0][:, 1]
-    refined: dict[int, PullOff] = {}
-    for i, P0 in zip(run, P_lo, strict=True):
-        first = int(np.searchsorted(grid, d_lo[i], side="right"))
-        g = np.concatenate([[d_lo[i]], grid[first:]])
-        p = np.concatenate([[P0], Pg[first:]])
-        k = int(np.argmin(p))
-        if 0 < k < g.size - 1:
-            key = first + k - 1 if k >= 2 else -1 - i  # a bracket on the shared grid is refined once
-            if key not in refined:
-                refined[key] = find_pull_off(tab, g[k - 1], g[k + 1], g[k - 1:k + 2], p[k - 1:k + 2])
-            po = refined[key]
-            if po.exists and -po.force < p[k]:
-                best_P[i], best_d[i] = -po.force, po.d
-                continue
-        best_P[i], best_d[i] = p[k], g[k]
+    P0 = tab.sums(d_lo[run])[0][:, 1]
+    first = np.searchsorted(grid, d_lo[run], side="right")  # grid points beyond each d_lo
+    g = _suffix_argmin(Pg)[np.minimum(first, m - 1)]
+    at_start = (first >= m) | (P0 <= Pg[g])
+    best_P[run], best_d[run] = np.where(at_start, P0, Pg[g]), np.where(at_start, d_lo[run], grid[g])
+    refined: dict[tuple, PullOff] = {}
+    for r in np.flatnonzero(~at_start & (g < m - 1)):  # an interior minimum: refine its bracket
+        i, gi = run[r], int(g[r])
+        left = (grid[gi - 1], Pg[gi - 1]) if gi - 1 >= first[r] else (d_lo[i], P0[r])
+        key = (gi, left[0])
+        if key not in refined:
+            refined[key] = find_pull_off(tab, left[0], grid[gi + 1], np.array([left[0], grid[gi], grid[gi + 1]]),
+                                         np.array([left[1], Pg[gi], Pg[gi + 1]]))
+        po = refined[key]
+        if po.exists and -po.force < best_P[i]:
+            best_P[i], best_d[i] = -po.force, po.d
     return best_P, best_d
 
 

@@ -43,10 +43,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._validation import as_float_array, scalar
 from .cycle_search import bracketed_roots
 from .quadrature import gauss_legendre
 
-__all__ = ["Jump", "base_displacement", "spring_path", "jump_energy"]
+__all__ = ["Jump", "check_stiffness", "base_displacement", "spring_path", "jump_energy"]
 
 
 @dataclass(frozen=True)
@@ -81,6 +82,18 @@ class Jump:
                 "P_from": self.P_from, "P_to": self.P_to, "energy": self.energy}
 
 
+def check_stiffness(stiffness) -> float:
+    """``stiffness`` as a float in (0, inf]; ValueError naming it otherwise."""
+    if isinstance(stiffness, float | int | np.floating | np.integer) and not isinstance(stiffness, bool | np.bool_) \
+            and math.isinf(stiffness) and stiffness > 0:
+        return math.inf
+    k = float(scalar(as_float_array(stiffness, "stiffness"), "stiffness"))
+    if not k > 0:
+        raise ValueError(f"stiffness (instrument spring, k sigma/(N G b^2)) must be > 0 (inf: displacement "
+                         f"control; valid range 0 < stiffness <= inf), got {stiffness!r}")
+    return k
+
+
 def base_displacement(d, P, stiffness):
     r"""Base displacement :math:`\bar Z = \bar d - \bar P/\bar k` of a spring of stiffness :math:`\bar k`.
 
@@ -100,16 +113,27 @@ def base_displacement(d, P, stiffness):
     ndarray
         :math:`\bar Z` in :math:`\sigma`.
 
+    Raises
+    ------
+    ValueError
+        If ``stiffness`` is not a positive real scalar (inf allowed), or ``d``, ``P`` are not
+        real and finite.
+
     Examples
     --------
     >>> base_displacement([1.0, 2.0], [10.0, -5.0], 10.0).tolist()
     [0.0, 2.5]
+
+    References
+    ----------
+    Israelachvili (2011), ch. 13; Butt, Cappella & Kappl (2005).
     """
-    d = np.asarray(d, dtype=float)
-    P = np.asarray(P, dtype=float)
-    if math.isinf(stiffness):
+    k = check_stiffness(stiffness)
+    d = as_float_array(d, "d", allow_empty=True)
+    P = as_float_array(P, "P", allow_empty=True)
+    if math.isinf(k):
         return d + 0.0 * P
-    return d - P / stiffness
+    return d - P / k
 
 
 def _folds_inside(gl, gr):

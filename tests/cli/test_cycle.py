@@ -119,3 +119,15 @@ def test_errors_are_one_line(capsys, argv, needle):
     code, out, err = run(capsys, *argv)
     assert one_line_error(code, err, needle), err
     assert out == ""
+
+
+def test_help_explains_every_option(capsys):
+    from asperity.cli import main
+
+    with pytest.raises(SystemExit) as exc:
+        main(["cycle", "--help"])
+    assert exc.value.code == 0
+    out = " ".join(capsys.readouterr().out.split())
+    for word in ("--dmin", "--preload", "--dmax", "--stiffness", "--u-in", "--d", "--points", "--plot", "branch",
+                 "N/m", "displacement control", "energy", "pull_off", "d_base", "jump"):
+        assert word in out, word
