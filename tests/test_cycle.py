@@ -238,6 +238,9 @@ def test_result_columns_csv_dataframe_dict():
     spring = cycle(*ABOVE, preload=100.0, n=50, stiffness=100.0)
     assert list(spring.columns()) == ["branch", "d_base", "d", "P", "F", "mu", "area", "pressure", "contacts", "jump"]
     json.dumps(spring.to_dict(), allow_nan=False)
+    # Each branch is a curve of its own, with its branch column.
+    assert c.retract.to_csv().splitlines()[0] == "branch,d,P,F,mu,area,pressure,contacts"
+    assert set(spring.approach.columns()["branch"]) == {"approach"} and "jump" in spring.retract.columns()
     with pytest.raises(AttributeError):
         c.energy = 1.0
 

@@ -117,11 +117,12 @@ def _path_grid(d_min: float, d_max: float, reach: float, n: int):
 
 
 # -- the cycle -----------------------------------------------------------------------------
-def _branch(ci: CycleIntegrals, d, sums, stiffness, jump, parameters) -> BranchCurve:
+def _branch(ci: CycleIntegrals, name, d, sums, stiffness, jump, parameters) -> BranchCurve:
     contacts, P, F, area = (sums[:, i] for i in range(4))
     return BranchCurve(d=d, P=P, F=F, mu=friction_coefficient(F, P), area=area,
                        pressure=mean_pressure(P, area, ci.params.nu), contacts=contacts, parameters=parameters,
-                       d_base=base_displacement(d, P, stiffness), jump=jump)
+                       d_base=base_displacement(d, P, stiffness), jump=jump, branch=name,
+                       spring=not math.isinf(stiffness))
 
 
 def compute_cycle(ci: CycleIntegrals, *, d_min=None, preload=None, d_max=None, d=None, n=200,
@@ -153,8 +154,8 @@ def compute_cycle(ci: CycleIntegrals, *, d_min=None, preload=None, d_max=None, d
     if not spring:
         no_jump = np.zeros(grid.size, dtype=bool)
         order = slice(None, None, -1) if d is None else slice(None)
-        approach = _branch(ci, grid[order], app[0][order], k, no_jump, parameters)
-        retract = _branch(ci, grid, ret[0], k, no_jump, parameters)
+        approach = _branch(ci, "approach", grid[order], app[0][order], k, no_jump, parameters)
+        retract = _branch(ci, "retract", grid, ret[0], k, no_jump, parameters)
         po = retract_pull_off(ci, np.array([d_min]), d_max)[0]
     else:
         approach, retract, jumps = _measured(ci, grid, app, ret, d_min, k, parameters)
@@ -219,9 +220,9 @@ def _measured(ci: CycleIntegrals, grid, app, ret, d_min: float, k: float, parame
                                       d_top=d_top)
     jumps = [dataclasses.replace(j, energy=jump_energy(j, f_app, k)) for j in jumps]
     jumps += [dataclasses.replace(j, energy=jump_energy(j, f_ret, k, kinks=(d_j,), d_top=d_top)) for j in more]
-    approach = _branch(ci, pts_a, _rows(pts_a, grid, app[0], lambda x: ci.approach_sums(x)[0]), k, jump_a,
+    approach = _branch(ci, "approach", pts_a, _rows(pts_a, grid, app[0], lambda x: ci.approach_sums(x)[0]), k, jump_a,
                        parameters)
-    retract = _branch(ci, pts_r, _rows(pts_r, grid, ret[0], beyond_top), k, jump_r, parameters)
+    retract = _branch(ci, "retract", pts_r, _rows(pts_r, grid, ret[0], beyond_top), k, jump_r, parameters)
     return approach, retract, jumps
 
 

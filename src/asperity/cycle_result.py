@@ -15,7 +15,7 @@ import numpy as np
 
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._json import json_safe
-from .curves import COLUMNS, CurveResult
+from .curves import CurveResult
 from .instrument import Jump
 from .load_control import PullOff
 
@@ -25,11 +25,28 @@ __all__ = ["BranchCurve", "CycleResult", "PreloadCurve"]
 @dataclass(frozen=True)
 class BranchCurve(CurveResult):
     """One branch of a cycle, in path order: the columns of a curve, the spring's base displacement
-    ``d_base`` (:math:`\\bar d - \\bar P/\\bar k`; equal to ``d`` without a spring) and ``jump``
-    (True where the step from the previous point is a whole-surface jump)."""
+    ``d_base`` (:math:`\\bar d - \\bar P/\\bar k`; equal to ``d`` without a spring), ``jump``
+    (True where the step from the previous point is a whole-surface jump), ``branch``
+    (``'approach'`` or ``'retract'``) and ``spring`` (measured through a finite spring).
+
+    :meth:`columns` gives ``branch``, (``d_base``,) the columns of a curve (, ``jump``): ``d_base``
+    and ``jump`` only with a spring; ``to_csv()`` and ``to_dataframe()`` write them.
+    """
 
     d_base: np.ndarray = None
     jump: np.ndarray = None
+    branch: str = ""
+    spring: bool = False
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """``branch``, (``d_base``,) the columns of a curve (, ``jump``), in that order."""
+        out = {"branch": np.full(len(self), self.branch)}
+        if self.spring:
+            out["d_base"] = np.asarray(self.d_base)
+        out.update(super().columns())
+        if self.spring:
+            out["jump"] = np.asarray(self.jump, dtype=bool)
+        return out
 
 
 @dataclass(frozen=True)
@@ -99,12 +116,8 @@ class CycleResult:
 
         ``d_base`` and ``jump`` are there only with a finite spring stiffness.
         """
-        branches = (self.approach, self.retract)
-        out = {"branch": np.array(["approach"] * len(self.approach) + ["retract"] * len(self.retract))}
-        names = (["d_base"] if self.spring else []) + list(COLUMNS) + (["jump"] if self.spring else [])
-        for name in names:
-            out[name] = np.concatenate([np.asarray(getattr(b, name)) for b in branches])
-        return out
+        parts = [b.columns() for b in (self.approach, self.retract)]
+        return {name: np.concatenate([p[name] for p in parts]) for name in parts[0]}
 
     def to_dataframe(self):
         """The rows as a :class:`pandas.DataFrame` (needs pandas: ``asperity[frame]``)."""

@@ -34,7 +34,7 @@ from ._json import json_safe
 from ._validation import as_float_array, check_scalar_positive, scalar
 from .cycle import CycleResult, PreloadCurve, compute_cycle, compute_preload_curve
 from .cycle_integrals import CycleIntegrals
-from .physical import PHYSICAL_COLUMNS, PhysicalContact, PhysicalCurve, PhysicalPullOff
+from .physical import PhysicalContact, PhysicalCurve, PhysicalPullOff
 from .quantities import CYCLE_QUANTITIES
 from .units import to_si
 
@@ -48,10 +48,24 @@ def _si(name: str) -> str:
 @dataclass(frozen=True)
 class PhysicalBranch(PhysicalCurve):
     """One branch of a physical cycle in SI units (columns of :data:`~asperity.physical.PHYSICAL_COLUMNS`),
-    with the spring's base displacement ``d_base`` (m) and the ``jump`` marks."""
+    with the spring's base displacement ``d_base`` (m), the ``jump`` marks, the ``branch`` name and
+    ``spring`` (measured through a finite spring).  :meth:`columns`: ``branch``, (``d_base_m``,) the
+    SI columns of a curve (, ``jump``)."""
 
     d_base: np.ndarray = None
     jump: np.ndarray = None
+    branch: str = ""
+    spring: bool = False
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """``branch``, (``d_base_m``,) the SI columns of a curve (, ``jump``), in that order."""
+        out = {"branch": np.full(len(self), self.branch)}
+        if self.spring:
+            out[_si("d_base")] = np.asarray(self.d_base)
+        out.update(super().columns())
+        if self.spring:
+            out["jump"] = np.asarray(self.jump, dtype=bool)
+        return out
 
 
 @dataclass(frozen=True)
@@ -90,13 +104,8 @@ class PhysicalCycle:
 
     def columns(self) -> dict[str, np.ndarray]:
         """``branch``, (``d_base_m``,) the SI columns of a curve (, ``jump``): approach rows, then retract rows."""
-        spring = self.dimensionless.spring
-        out = {"branch": self.dimensionless.columns()["branch"]}
-        names = ([("d_base", _si("d_base"))] if spring else []) + [(a, c) for a, (c, _, _) in PHYSICAL_COLUMNS.items()]
-        names += [("jump", "jump")] if spring else []
-        for attr, col in names:
-            out[col] = np.concatenate([np.asarray(getattr(b, attr)) for b in (self.approach, self.retract)])
-        return out
+        parts = [b.columns() for b in (self.approach, self.retract)]
+        return {name: np.concatenate([p[name] for p in parts]) for name in parts[0]}
 
     def to_dataframe(self):
         """The rows as a :class:`pandas.DataFrame` (needs pandas); scalars in ``attrs``."""
@@ -182,7 +191,8 @@ def _branch(contact: PhysicalContact, b) -> PhysicalBranch:
         pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
     return PhysicalBranch(d=b.d * sigma, P=P, F=b.F * fs, mu=b.mu, area=area, pressure=pressure,
                           contacts=b.contacts * contact.N, dimensionless=b, parameters=contact.parameters(),
-                          nominal_area=contact.surface.area, d_base=b.d_base * sigma, jump=b.jump)
+                          nominal_area=contact.surface.area, d_base=b.d_base * sigma, jump=b.jump, branch=b.branch,
+                          spring=b.spring)
 
 
 def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=None, d=None, n=200,
