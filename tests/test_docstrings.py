@@ -15,8 +15,8 @@ import asperity
 DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
-                   "asperity.heights", "asperity.cycle", "asperity.cycle_integrals", "asperity.instrument",
-                   "asperity.physical_cycle"]
+                   "asperity.heights", "asperity.cycle", "asperity.cycle_run", "asperity.cycle_integrals",
+                   "asperity.instrument", "asperity.physical_cycle"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {

@@ -30,7 +30,7 @@ LAYERS = [
     ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch"}),
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
-    ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search",
+    ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search", "cycle_run",
                 "cycle_result", "instrument"}),
     ("physical", {"materials", "physical", "surface", "regimes", "topography", "physical_cycle"}),
     ("applications", {"fit", "sweeps", "validation", "cycle_plot"}),
