@@ -278,6 +278,12 @@ def test_module_is_callable():
     ({"d_min": 0.0, "d_max": 1e6}, "d_max"),
     ({"d_min": None, "preload": None, "d_max": float("inf")}, "d_max"),
     ({"d_min": float("nan")}, "d_min"),
+    ({"d_min": True}, "d_min"),
+    ({"d_min": [0.0, 1.0]}, "d_min"),
+    ({"d_min": 1j}, "d_min"),
+    ({"d_min": 0.0, "u_in": None}, "u_in"),
+    ({"d_min": 0.0, "stiffness": None}, "stiffness"),
+    ({"d_min": 0.0, "n": 10**7}, "n (points"),
     ({"d_min": -2e4}, "d_min"),
 ])
 def test_bad_input_names_the_parameter(kwargs, needle):

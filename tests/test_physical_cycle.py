@@ -91,3 +91,16 @@ def test_bad_input(contact, kwargs, needle):
 def test_bad_preload_curve(contact):
     with pytest.raises(ValueError, match="preload"):
         contact.preload_curve([1e-3, -1e-3])
+
+
+def test_names_come_from_the_registry(contact):
+    from asperity.quantities import CYCLE_QUANTITIES as Q
+
+    pc = contact.preload_curve([1e-3])
+    dc = preload_curve([1.0], 0.01, 1000.0, 1e-3)
+    assert all(name in Q for name in dc.columns())
+    si = {q.si_name for q in Q.values()}
+    assert set(pc.columns()) <= si
+    c = contact.cycle(preload=1e-3, n=5)
+    scalars = {k for part in ("pull_off", "energy") for k in c.to_dict()[part] if k != "exists"}
+    assert scalars - {"force_N", "d_m"} <= si
