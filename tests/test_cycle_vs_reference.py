@@ -77,3 +77,19 @@ def test_retract_pull_off_in_the_transition_zone():
     P = [reference.retract_point(x, 0.5, *p)["P"] for x in (po.d - 0.01, po.d, po.d + 0.01)]
     assert P[1] == pytest.approx(-po.force, rel=1e-8)
     assert P[0] > P[1] and P[2] > P[1]
+
+
+def test_jump_in_below_first_touch():
+    # u_in between the branch end and 0: approach, retraction and energy follow it.
+    p = CASES[2]
+    u_end = AsperityLaw(ModelParameters(*p)).u_end
+    u_in, d_min = 0.5 * u_end, -0.2
+    d = np.array([d_min + 0.2 * (u_in - u_end), d_min + (u_in - u_end) + 0.3])
+    c = cycle(*p, d_min=d_min, d=d, u_in=u_in)
+    for i, x in enumerate(d):
+        a = reference.approach_point(x, *p, u_in=u_in)
+        r = reference.retract_point(x, d_min, *p, u_in=u_in)
+        for key in ("contacts", "P", "F", "area"):
+            assert getattr(c.approach, key)[i] == pytest.approx(a[key], rel=1e-8), (key, x)
+            assert getattr(c.retract, key)[i] == pytest.approx(r[key], rel=1e-8), (key, x)
+    assert c.energy == pytest.approx(reference.cycle_energy(d_min, c.d_max, *p, u_in=u_in), rel=1e-8)
