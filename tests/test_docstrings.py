@@ -16,7 +16,8 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
                    "asperity.heights", "asperity.jackson_green", "asperity.jackson_green_fits",
-                   "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity"]
+                   "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity", "asperity.cycle",
+                   "asperity.cycle_run", "asperity.cycle_integrals", "asperity.instrument", "asperity.physical_cycle"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -37,6 +38,9 @@ FULL_DOCS = {
     "asperity.nix_gao": ["ng_hardness", "ng_scaled_interference", "ng_interference", "ng_critical_interference"],
     "asperity.elastic_plastic": ["critical_penetration", "plastic_fraction", "make_law"],
     "asperity.plasticity": ["plasticity_index", "plastic_share"],
+    "asperity.cycle": ["cycle", "preload_curve"],
+    "asperity.physical_cycle": ["physical_cycle", "physical_preload_curve"],
+    "asperity.instrument": ["base_displacement"],
 }
 
 

@@ -1,4 +1,4 @@
-"""The worked example runs and its numbers are the library's."""
+"""The worked examples run and their numbers are the library's."""
 
 import importlib.util
 import pathlib
@@ -6,19 +6,18 @@ import pathlib
 import numpy as np
 import pytest
 
-pytest.importorskip("SurfaceTopography")
-
-EXAMPLE = pathlib.Path(__file__).parents[1] / "examples" / "afm_gold.py"
+EXAMPLES = pathlib.Path(__file__).parents[1] / "examples"
 
 
-def load_example():
-    spec = importlib.util.spec_from_file_location("afm_gold", EXAMPLE)
+def load_example(name="afm_gold"):
+    spec = importlib.util.spec_from_file_location(name, EXAMPLES / f"{name}.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
 
 
 def test_afm_gold_example(tmp_path, capsys):
+    pytest.importorskip("SurfaceTopography")
     from asperity import PlasticityWarning
     from asperity.physical import PhysicalContact
     from asperity.topography import analyse_surface
@@ -69,7 +68,7 @@ def test_plasticity_example(tmp_path, capsys):
     from asperity import PlasticityWarning
     from asperity.physical import PhysicalContact
 
-    spec = importlib.util.spec_from_file_location("plasticity_example", EXAMPLE.parent / "plasticity.py")
+    spec = importlib.util.spec_from_file_location("plasticity_example", EXAMPLES / "plasticity.py")
     example = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(example)
     disks, gold = example.main(["--out", str(tmp_path)])
@@ -93,3 +92,22 @@ def test_plasticity_example(tmp_path, capsys):
         assert np.all(example.share(g["sized_curve"]) < 0.7 * example.share(g["plain_curve"]))
     rows = (tmp_path / "plasticity.csv").read_text().splitlines()
     assert rows[0].startswith("load_N,R_m") and len(rows) == 1 + 2 * len(example.GOLD_LOADS)
+
+
+def test_afm_cycle_example(tmp_path, capsys):
+    from asperity.physical import PhysicalContact, Surface
+
+    example = load_example("afm_cycle")
+    surface_only, measured, sweep = example.main(["--out", str(tmp_path)])
+    assert (tmp_path / "afm_cycle.png").read_bytes()[:4] == b"\x89PNG"
+    assert (tmp_path / "cycle.csv").read_text().startswith("branch,d_base_m,d_m,P_N")
+    assert (tmp_path / "preload.csv").exists()
+    out = capsys.readouterr().out
+    assert "pull-off force" in out and "jump out of contact" in out and "J/m^2" in out
+    # The same numbers straight from the library
+    contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12))
+    ref = contact.cycle(preload=5e-6, n=400, stiffness=10.0)
+    assert measured.energy_J == ref.energy_J and measured.pull_off.force == ref.pull_off.force
+    assert surface_only.energy_J == contact.cycle(preload=5e-6, n=400).energy_J
+    assert sweep.pull_off_N[-1] == pytest.approx(contact.pull_off().force, rel=1e-10)
+    assert any(j["branch"] == "retract" for j in measured.jumps)

@@ -31,9 +31,10 @@ LAYERS = [
                               "jackson_green", "jackson_green_fits", "nix_gao"}),
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
-    ("curves", {"curves", "load_control", "pull_off_search", "cycle", "interaction"}),
-    ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity"}),
-    ("applications", {"fit", "sweeps", "validation"}),
+    ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search", "cycle_run",
+                "cycle_result", "instrument", "interaction"}),
+    ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity", "physical_cycle"}),
+    ("applications", {"fit", "sweeps", "validation", "cycle_plot"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]
 #: The independent slow path: imports nothing else from asperity, and nothing imports it.

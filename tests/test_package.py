@@ -8,11 +8,13 @@ import pytest
 import asperity
 
 SUBMODULES = ["jkr", "dmt", "hertz", "maugis_dugdale", "friction_stress", "groups", "heights", "curves",
-              "physical", "materials", "multi_asperity", "asperity_law", "quantities", "units", "studies", "cli"]
+              "physical", "materials", "multi_asperity", "asperity_law", "quantities", "units", "studies", "cli",
+              "cycle", "physical_cycle", "instrument"]
 
 
 def test_public_names_are_the_defining_modules_objects():
     import asperity.curves
+    import asperity.cycle
     import asperity.elastic_plastic
     import asperity.friction_stress
     import asperity.heights
@@ -25,7 +27,7 @@ def test_public_names_are_the_defining_modules_objects():
         if name == "__version__":
             assert value == asperity._version.__version__
             continue
-        homes = [m for m in (asperity.curves, asperity.friction_stress, asperity.heights,
+        homes = [m for m in (asperity.curves, asperity.cycle, asperity.friction_stress, asperity.heights,
                              asperity.maugis_dugdale, asperity.multi_asperity, asperity.elastic_plastic,
                              asperity.plasticity) if hasattr(m, name)]
         assert homes and getattr(homes[0], name) is value, name

@@ -14,7 +14,9 @@ Layers, each importing only downward:
   :mod:`~asperity.heights`
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
   :mod:`~asperity.multi_asperity`; the laws by name: :mod:`~asperity.elastic_plastic`
-* curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
+* curves: :mod:`~asperity.curves`; loading-unloading cycles: :mod:`~asperity.cycle`
+  (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); the paper's figures:
+  :mod:`~asperity.studies`;
   the command line: :mod:`~asperity.cli`
 
 Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
@@ -38,6 +40,9 @@ _EXPORTS = {
     "load_curve": "curves",
     "pull_off": "curves",
     "separation_curve": "curves",
+    "CycleResult": "cycle",
+    "PreloadCurve": "cycle",
+    "preload_curve": "cycle",
     "ConstantShear": "friction_stress",
     "Elastic": "elastic_plastic",
     "JacksonGreen": "elastic_plastic",
@@ -65,6 +70,7 @@ _SUBMODULES = (
     "asperity_law",
     "cli",
     "curves",
+    "cycle",
     "dmt",
     "elastic_plastic",
     "friction_stress",
@@ -78,8 +84,10 @@ _SUBMODULES = (
     "materials",
     "maugis_dugdale",
     "multi_asperity",
+    "instrument",
     "nix_gao",
     "physical",
+    "physical_cycle",
     "plasticity",
     "quadrature",
     "quantities",
@@ -98,6 +106,9 @@ __all__ = [
     "load_curve",
     "pull_off",
     "separation_curve",
+    "CycleResult",
+    "PreloadCurve",
+    "preload_curve",
     "ConstantShear",
     "Elastic",
     "JacksonGreen",

@@ -371,6 +371,21 @@ class PhysicalContact(ContactPlasticity):
         return PhysicalPullOff(force=po.force * self.force_scale, d=po.d * self.surface.sigma_s,
                                exists=po.exists, dimensionless=po)
 
+    def cycle(self, *, d_min=None, preload=None, d_max=None, d=None, n=200, stiffness=None, u_in=0.0):
+        """An approach-retract cycle in SI units: :func:`asperity.physical_cycle.physical_cycle` for this contact
+        (``preload`` in N, ``d_min``, ``d_max``, ``d``, ``u_in`` in m, ``stiffness`` in N/m)."""
+        from .physical_cycle import physical_cycle
+
+        return physical_cycle(self, d_min=d_min, preload=preload, d_max=d_max, d=d, n=n, stiffness=stiffness,
+                              u_in=u_in)
+
+    def preload_curve(self, preload, *, d_max=None, u_in=0.0):
+        """Pull-off and energy dissipated against preload (N), in SI units:
+        :func:`asperity.physical_cycle.physical_preload_curve` for this contact."""
+        from .physical_cycle import physical_preload_curve
+
+        return physical_preload_curve(self, preload, d_max=d_max, u_in=u_in)
+
     def _physical(self, curve: CurveResult, *, d=None, P=None) -> PhysicalCurve:
         fs, area = self.force_scale, curve.area * self.area_scale
         P = curve.P * fs if P is None else P

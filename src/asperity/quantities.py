@@ -19,9 +19,10 @@ A :class:`Quantity` carries
 
 Four registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
 :class:`asperity.Model` and of its per-asperity laws), :data:`PHYSICAL_PARAMETERS` (inputs
-of a physical contact, in SI units), :data:`CURVE_COLUMNS` (the columns of every curve) and
+of a physical contact, in SI units), :data:`CURVE_COLUMNS` (the columns of every curve),
 :data:`PLASTIC_COLUMNS` (the column a curve gains when the per-asperity law or the material
-has a critical interference).  :func:`quantity` looks a name up in all four.
+has a critical interference) and :data:`CYCLE_QUANTITIES` (the inputs and results of a
+loading cycle, :mod:`asperity.cycle`).  :func:`quantity` looks a name up in all five.
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ __all__ = [
     "CURVE_COLUMNS",
     "VALIDATION_COLUMNS",
     "PLASTIC_COLUMNS",
+    "CYCLE_QUANTITIES",
     "quantity",
 ]
 
@@ -75,7 +77,7 @@ class Quantity:
         left = "" if self.lo == -_INF else f"{self.lo:g} {'<=' if self.lo_inclusive else '<'} "
         right = "" if self.hi == _INF else f" {'<=' if self.hi_inclusive else '<'} {self.hi:g}"
         if self.hi == _INF and self.lo != -_INF:
-            right = " < inf"
+            right = " <= inf" if self.hi_inclusive else " < inf"
         return f"{left}{self.name}{right}"
 
     def help(self) -> str:
@@ -223,6 +225,55 @@ VALIDATION_COLUMNS = _registry(
 )
 
 
+#: Inputs and results of a loading cycle (:mod:`asperity.cycle`): dimensionless, and SI for a
+#: physical contact (:mod:`asperity.physical_cycle`).
+CYCLE_QUANTITIES = _registry(
+    Quantity("d_min", r"d_{min}/\sigma", "closest approach of the cycle d_min/sigma", unit="sigma",
+             si_name="d_min_m", si_unit="m", si_meaning="closest approach (separation at the turning point)",
+             lo=-1.0e4, lo_inclusive=True),
+    Quantity("d_max", r"d_{max}/\sigma", "start and end of the cycle d_max/sigma (default: 10 beyond the end of "
+             "the asperities' stable branch)", unit="sigma", si_name="d_max_m", si_unit="m",
+             si_meaning="separation where the cycle starts and ends"),
+    Quantity("preload", r"P_{pre}/NGb^2", "preload: the largest compressive load P/(N G b^2), reached at the "
+             "closest approach", unit="N G b^2", si_name="preload_N", si_unit="N",
+             si_meaning="largest compressive load of the cycle", lo=0.0, log=True),
+    Quantity("stiffness", r"k\sigma/NGb^2", "instrument spring stiffness k sigma/(N G b^2); inf: displacement "
+             "control", unit="N G b^2/sigma", si_name="stiffness_N_m", si_unit="N/m",
+             si_meaning="stiffness of the instrument's spring (cantilever)", lo=0.0, hi=_INF, hi_inclusive=True,
+             log=True, default=_INF),
+    Quantity("u_in", r"\bar u_{in}", "penetration (z - d)/sigma at which an approaching asperity jumps into "
+             "contact, in [u_end, 0]", unit="sigma", si_name="u_in_m", si_unit="m",
+             si_meaning="penetration at which an approaching asperity jumps into contact", lo=-1.0e4, hi=0.0,
+             lo_inclusive=True, hi_inclusive=True, default=0.0, source="decisions.md 9"),
+    Quantity("d_base", r"Z/\sigma", "displacement of the instrument spring's base Z/sigma = d - P/k", unit="sigma",
+             si_name="d_base_m", si_unit="m", si_meaning="displacement of the instrument spring's base, d - P/k"),
+    Quantity("pull_off", r"P_{off}/NGb^2", "pull-off force on retraction |P|/(N G b^2)", unit="N G b^2",
+             si_name="pull_off_N", si_unit="N", si_meaning="pull-off force on retraction", lo=0.0,
+             lo_inclusive=True, log=True),
+    Quantity("d_pull_off", r"d_{off}/\sigma", "separation of the pull-off on retraction", unit="sigma",
+             si_name="d_pull_off_m", si_unit="m", si_meaning="separation of the pull-off on retraction"),
+    Quantity("energy", r"E/NGb^2\sigma", "energy dissipated per cycle E/(N G b^2 sigma)", unit="N G b^2 sigma",
+             si_name="energy_J", si_unit="J", si_meaning="energy dissipated per cycle", lo=0.0,
+             lo_inclusive=True, log=True),
+    Quantity("energy_per_area", "E/A_0", "energy dissipated per cycle and nominal area", unit="J/m^2",
+             si_name="energy_J_m2", si_unit="J/m^2", si_meaning="energy dissipated per cycle and nominal area",
+             lo=0.0, lo_inclusive=True, log=True),
+    Quantity("loop_energy", r"e/Gb^2\sigma", "energy one asperity dissipates through the whole loop "
+             "e/(G b^2 sigma)", unit="G b^2 sigma", si_name="loop_energy_J", si_unit="J",
+             si_meaning="energy one asperity dissipates through the whole loop", lo=0.0, lo_inclusive=True),
+    Quantity("loop_fraction", "n_{loop}/N", "fraction of asperities through the whole loop", si_name="loop_count",
+             si_unit="1", si_meaning="number of asperities through the whole loop", lo=0.0, hi=1.0,
+             lo_inclusive=True, hi_inclusive=True),
+    Quantity("jump_energy", r"E_{jump}/NGb^2\sigma", "energy lost in the instrument's jumps E/(N G b^2 sigma)",
+             unit="N G b^2 sigma", si_name="jump_energy_J", si_unit="J",
+             si_meaning="energy lost in the instrument's jumps", lo=0.0, lo_inclusive=True),
+    Quantity("friction_hysteresis", r"\oint F/NGb^2\sigma", "friction hysteresis: integral of F_retract - "
+             "F_approach over the separation, per N G b^2 sigma", unit="N G b^2 sigma",
+             si_name="friction_hysteresis_N_m", si_unit="N m",
+             si_meaning="integral of F_retract - F_approach over the separation", lo=0.0, lo_inclusive=True),
+)
+
+
 def quantity(name: str) -> Quantity:
     """The :class:`Quantity` called ``name`` in any registry (model parameters first).
 
@@ -231,8 +282,9 @@ def quantity(name: str) -> Quantity:
     ValueError
         For an unknown name; the message lists the known ones.
     """
-    for registry in (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS, PLASTIC_COLUMNS):
+    registries = (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS, PLASTIC_COLUMNS, CYCLE_QUANTITIES)
+    for registry in registries:
         if name in registry:
             return registry[name]
-    known = sorted({*MODEL_PARAMETERS, *PHYSICAL_PARAMETERS, *CURVE_COLUMNS, *PLASTIC_COLUMNS})
+    known = sorted({name for registry in registries for name in registry})
     raise ValueError(f"unknown quantity {name!r}; known: {', '.join(known)}")

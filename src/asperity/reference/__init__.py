@@ -49,10 +49,13 @@ Conventions (all quantities per asperity, i.e. divided by ``N``)
 Modules mirror the ones they check: :mod:`.maugis_dugdale` and :mod:`.maugis_dugdale_branch`
 (mpmath), :mod:`.friction_stress`, :mod:`.groups` and :mod:`.multi_asperity` (``gw_moment``,
 ``separation_point``, ``load_point``, ``pull_off``), :mod:`.elastic_plastic` (the
-Jackson-Green asperity with the Nix-Gao size effect and its integrals); :mod:`.common` holds mpmath and the
-input checks.  This package re-exports their public names.
+Jackson-Green asperity with the Nix-Gao size effect and its integrals) and :mod:`.cycle`
+(``approach_point``, ``retract_point``, ``cycle_energy``, ``retract_pull_off``:
+loading-unloading cycles); :mod:`.common` holds mpmath and the input checks.  This package
+re-exports their public names.
 """
 
+from .cycle import approach_point, cycle_energy, retract_point, retract_pull_off
 from .elastic_plastic import jg_asperity, jg_critical_penetration, jg_load_point, jg_separation_point
 from .friction_stress import hk_tau
 from .groups import conversion_factors
@@ -61,7 +64,9 @@ from .maugis_dugdale_branch import md_branch_end, md_point, md_pull_off
 from .multi_asperity import gw_moment, load_point, pull_off, separation_point
 
 __all__ = [
+    "approach_point",
     "conversion_factors",
+    "cycle_energy",
     "gw_moment",
     "hk_tau",
     "jg_asperity",
@@ -75,5 +80,7 @@ __all__ = [
     "md_point",
     "md_pull_off",
     "pull_off",
+    "retract_point",
+    "retract_pull_off",
     "separation_point",
 ]
