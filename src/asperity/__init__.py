@@ -13,7 +13,7 @@ Layers, each importing only downward:
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
   :mod:`~asperity.multi_asperity`
 * curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
-  the command line: :mod:`~asperity.cli`
+  the command line: :mod:`~asperity.cli`; the browser explorer: :mod:`~asperity.explorer`
 
 Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
 the first use of a name below (``asperity.load_curve``) or of a submodule
@@ -59,6 +59,7 @@ _SUBMODULES = (
     "cli",
     "curves",
     "dmt",
+    "explorer",
     "friction_stress",
     "groups",
     "heights",

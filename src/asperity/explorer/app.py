@@ -26,7 +26,7 @@ from functools import partial
 from bokeh.core.properties import Int, String
 from bokeh.layouts import column, row
 from bokeh.model import DataModel
-from bokeh.models import Button, CustomJS, Div, RadioButtonGroup
+from bokeh.models import Button, CustomJS, Div, InlineStyleSheet, RadioButtonGroup
 
 from . import compute as _compute
 from .controls import make_control
@@ -87,10 +87,11 @@ def _html_list(items, cls: str) -> str:
     return "".join(f'<div class="{cls}">{html.escape(text)}</div>' for text in items)
 
 
-_STYLE = ("<style>.error{background:#fde8e8;border-left:4px solid #c81e1e;padding:4px 8px;margin:2px 0}"
+#: Styles of the messages and numbers (each Div renders in its own shadow root, so each gets them).
+_STYLE = (".error{background:#fde8e8;border-left:4px solid #c81e1e;padding:4px 8px;margin:2px 0}"
           ".warning{background:#fdf6e3;border-left:4px solid #d39e00;padding:4px 8px;margin:2px 0}"
           ".note{background:#eef2f7;border-left:4px solid #6b7c93;padding:4px 8px;margin:2px 0}"
-          "table.derived td{padding:1px 10px 1px 0}</style>")
+          "table.derived td{padding:1px 10px 1px 0}")
 
 
 class ExplorerSession:
@@ -125,8 +126,10 @@ class ExplorerSession:
                                      css_classes=["asp-input-mode"])
         self.mode.on_change("active", lambda attr, old, new: self.on_value("mode", MODES[new]))
         self.plots = Plots()
-        self.messages = Div(text="", width=1080, name="messages", css_classes=["asp-messages"])
-        self.derived = Div(text="", width=1080, name="derived", css_classes=["asp-derived"])
+        self.messages = Div(text="", width=1080, name="messages", css_classes=["asp-messages"],
+                            stylesheets=[InlineStyleSheet(css=_STYLE)])
+        self.derived = Div(text="", width=1080, name="derived", css_classes=["asp-derived"],
+                           stylesheets=[InlineStyleSheet(css=_STYLE)])
         self.page = PageState(query="", name="page")
         self.page.js_on_change("query", CustomJS(args={"page": self.page}, code=_URL_JS))
         self.page.js_on_change("download_count", CustomJS(args={"page": self.page}, code=_DOWNLOAD_JS))
@@ -159,7 +162,7 @@ class ExplorerSession:
             self.sections[heading] = box
             sections.append(box)
         self.sections["Summit heights"].visible = len(self.fields["heights"].choices) > 1
-        right = column(Div(text=_STYLE), self.messages, self.derived, self.plots.layout,
+        right = column(self.messages, self.derived, self.plots.layout,
                        *[p.layout for p in self.panels])
         return column(row(head, csv_load, csv_sep, png), row(column(*sections, width=CONTROL_WIDTH + 10), right))
 

@@ -18,7 +18,15 @@ in physical mode; axis labels and titles come from :data:`asperity.quantities.CU
 from __future__ import annotations
 
 from bokeh.layouts import gridplot
-from bokeh.models import ColumnDataSource, DataRange1d, HoverTool, Legend, Span
+from bokeh.models import (
+    BasicTickFormatter,
+    ColumnDataSource,
+    CustomJSTickFormatter,
+    DataRange1d,
+    HoverTool,
+    Legend,
+    Span,
+)
 from bokeh.plotting import figure
 
 from ..physical import AREA_FRACTION_LIMIT
@@ -31,7 +39,33 @@ LOAD_COLUMNS = ("d", "P", "F", "mu", "area", "pressure", "contacts", "fraction",
 SEPARATION_COLUMNS = ("d", "P", "F", "mu", "area", "pressure", "contacts", "P_compressive", "P_tensile")
 COLOURS = {"line": "#1f77b4", "second": "#d62728", "marker": "#000000", "limit": "#7f7f7f"}
 TOOLS = "pan,wheel_zoom,box_zoom,reset,save"
-SIZE = {"width": 350, "height": 270}
+SIZE = {"width": 345, "height": 265}
+
+#: Log-axis ticks: powers of ten as 10ⁿ (1 and 10 plain); others (an axis within one decade)
+#: plain from 0.001 to 9999, else as 2×10ⁿ.
+_LOG_TICKS = """
+const sup = (n) => String(n).replace(/[-0-9]/g, (c) => '⁻⁰¹²³⁴⁵⁶⁷⁸⁹'['-0123456789'.indexOf(c)]);
+if (!(tick > 0)) return '';
+const e = Math.floor(Math.log10(tick) + 1e-9);
+const m = tick / Math.pow(10, e);
+if (Math.abs(m - 1) < 1e-6) return e === 0 ? '1' : (e === 1 ? '10' : '10' + sup(e));
+const digits = Number(m.toPrecision(2));
+return (e >= -3 && e <= 3) ? String(Number(tick.toPrecision(2))) : digits + '×10' + sup(e);
+"""
+
+
+#: Linear ticks of a physical quantity with an SI prefix (``-2 n``, ``500 p``; the unit is in the label).
+_SI_TICKS = """
+if (tick === 0) return '0';
+const prefixes = {'-15': 'f', '-12': 'p', '-9': 'n', '-6': 'µ', '-3': 'm', '0': '', '3': 'k', '6': 'M', '9': 'G'};
+const top = Math.max(...ticks.map(Math.abs));
+const e = Math.min(9, Math.max(-15, 3 * Math.floor(Math.log10(top) / 3)));
+return String(Number((tick / Math.pow(10, e)).toPrecision(4))) + ' ' + prefixes[String(e)];
+"""
+
+
+def _log_ticks(axis) -> None:
+    axis.formatter = CustomJSTickFormatter(code=_LOG_TICKS)
 
 
 def _empty(columns) -> dict:
@@ -56,6 +90,8 @@ class Plots:
         for key, y in (("mu", "mu"), ("pressure", "pressure"), ("area", "area"), ("fraction", "contacts")):
             fig = figure(x_axis_type="log", y_axis_type="log", x_range=x_load, tools=TOOLS, name=f"plot:{key}",
                          **SIZE)
+            _log_ticks(fig.xaxis)
+            _log_ticks(fig.yaxis)
             col = "fraction" if key == "fraction" else y
             line = fig.line("P", col, source=self.load, line_width=2, color=COLOURS["line"])
             self._hover(fig, line, ("P", "mu", "d", "F", "area", "pressure", "contacts"))
@@ -72,6 +108,7 @@ class Plots:
         frac.add_layout(self.fraction_legend)
         for key, y in (("force", "P_compressive"), ("friction", "F")):
             fig = figure(x_range=x_sep, y_axis_type="log", tools=TOOLS, name=f"plot:{key}", **SIZE)
+            _log_ticks(fig.yaxis)
             line = fig.line("d", y, source=self.separation, line_width=2, color=COLOURS["line"])
             self._hover(fig, line, ("d", "P", "F", "mu", "area", "contacts"))
             self.figures[key] = fig
@@ -86,7 +123,7 @@ class Plots:
         x_sep.renderers = [force.renderers[0], tensile, self.figures["friction"].renderers[0]]
         f = self.figures
         self.grid = gridplot([[f["mu"], f["pressure"], f["area"]], [f["force"], f["friction"], f["fraction"]]],
-                             toolbar_location="right", merge_tools=True)
+                             toolbar_location="above", merge_tools=True)
         self.grid.name = "plots"
         self.layout = self.grid
         self.set_mode(physical=False)
@@ -106,6 +143,9 @@ class Plots:
             fig.yaxis.axis_label = axis_label(y, physical and key != "fraction")
             fig.title.text = title(y, physical and key != "fraction") + (" (tensile part dashed)"
                                                                           if key == "force" else "")
+        for key in ("force", "friction"):
+            self.figures[key].xaxis.formatter = (CustomJSTickFormatter(code=_SI_TICKS) if physical
+                                                 else BasicTickFormatter())
         self.figures["fraction"].yaxis.axis_label = "n/N, A/A0" if physical else axis_label(C["contacts"], False)
         self.figures["fraction"].title.text = "contact fraction"
         for item in (self.area_fraction, self.limit, self.fraction_legend):

@@ -29,11 +29,18 @@ _ALL_INTERFACES = ("0.0.0.0", "::", "")
 _LOCAL_NAMES = ("127.0.0.1", "localhost", "::1")
 
 
-def free_port(host: str = LOOPBACK) -> int:
-    """A port free on ``host`` now (the OS's choice)."""
+def free_port(host: str = LOOPBACK, port: int = 0) -> int:
+    """``port`` if it is free on ``host`` now, or (for 0) a free port the OS chooses.
+
+    Raises
+    ------
+    OSError
+        If ``port`` is in use or ``host`` is not an address of this machine.
+    """
     family = socket.AF_INET6 if ":" in host else socket.AF_INET
     with socket.socket(family, socket.SOCK_STREAM) as s:
-        s.bind((host, 0))
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)  # as the server will
+        s.bind((host, port))
         return int(s.getsockname()[1])
 
 
@@ -76,7 +83,7 @@ def start_server(port: int = DEFAULT_PORT, host: str = LOOPBACK):
 
     from .app import make_document
 
-    port = free_port(host) if port == 0 else int(port)
+    port = free_port(host, int(port))  # fails cleanly if taken (Tornado would leak a socket)
     server = Server({"/": Application(FunctionHandler(make_document))}, port=port, address=host,
                     allow_websocket_origin=_origins(host, port), num_procs=1)
     server.start()

@@ -154,7 +154,7 @@ def fields() -> dict[str, Field]:
             _registry_field("b_m", S["b"], au.b, mode=MODES[1], unit="m", label="b"),
             _registry_field("w_J_m2", S["w"], au.w, mode=MODES[1], unit="J/m^2", label="w"),
             Field("adhesion", "flag", True, mode=MODES[1],
-                  help="Maugis-Dugdale adhesion with the material's w (off: Hertz, gamma = 0)")]
+                  help="Maugis-Dugdale, with the material's w (off: Hertz)")]
     out += [_registry_field(S[k].si_name, S[k], START[k], mode=MODES[1], unit=S[k].si_unit)
             for k in ("sigma_s", "R", "eta", "area")]
     out += [_registry_field("P_min_N", C["P"], START["P_min_N"], mode=MODES[1], unit="N", label="P min"),
