@@ -118,7 +118,7 @@ class PhysicalCurve:
         over = np.flatnonzero(fraction > limit)
         if over.size == 0:
             return []
-        return [f"the real contact area reaches {100 * float(np.max(fraction)):.3g} % of the nominal area "
+        return [f"the real contact area reaches {100 * float(np.nanmax(fraction)):.3g} % of the nominal area "
                 f"(above {100 * limit:g} % from P = {float(self.P[over[0]]):.4g} N): neighbouring contacts "
                 "interact and the Greenwood-Williamson model of independent asperities degrades"]
 

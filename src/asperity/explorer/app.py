@@ -47,6 +47,9 @@ GROUPS = (
     ("Summit heights", ("heights",)),
 )
 CONTROL_WIDTH = 330
+#: Heights (px) of the messages (scrolling beyond two) and of the derived numbers in each mode.
+MESSAGES_HEIGHT = 62
+DERIVED_HEIGHT = {"dimensionless": 112, "physical": 176}
 
 
 class PageState(DataModel):
@@ -91,7 +94,7 @@ def _html_list(items, cls: str) -> str:
 _STYLE = (".error{background:#fde8e8;border-left:4px solid #c81e1e;padding:4px 8px;margin:2px 0}"
           ".warning{background:#fdf6e3;border-left:4px solid #d39e00;padding:4px 8px;margin:2px 0}"
           ".note{background:#eef2f7;border-left:4px solid #6b7c93;padding:4px 8px;margin:2px 0}"
-          "table.derived td{padding:1px 10px 1px 0}")
+          ".quiet{color:#888;padding:4px 8px}table.derived td{padding:1px 10px 1px 0}")
 
 
 class ExplorerSession:
@@ -126,10 +129,11 @@ class ExplorerSession:
                                      css_classes=["asp-input-mode"])
         self.mode.on_change("active", lambda attr, old, new: self.on_value("mode", MODES[new]))
         self.plots = Plots()
-        self.messages = Div(text="", width=1080, name="messages", css_classes=["asp-messages"],
-                            stylesheets=[InlineStyleSheet(css=_STYLE)])
-        self.derived = Div(text="", width=1080, name="derived", css_classes=["asp-derived"],
-                           stylesheets=[InlineStyleSheet(css=_STYLE)])
+        # Fixed heights: new text never moves the plots (a moved plot repaints; updates stay quick).
+        self.messages = Div(text="", width=1080, height=MESSAGES_HEIGHT, name="messages", css_classes=["asp-messages"],
+                            stylesheets=[InlineStyleSheet(css=_STYLE)], styles={"overflow-y": "auto"})
+        self.derived = Div(text="", width=1080, height=DERIVED_HEIGHT[MODES[0]], name="derived",
+                           css_classes=["asp-derived"], stylesheets=[InlineStyleSheet(css=_STYLE)])
         self.page = PageState(query="", name="page")
         self.page.js_on_change("query", CustomJS(args={"page": self.page}, code=_URL_JS))
         self.page.js_on_change("download_count", CustomJS(args={"page": self.page}, code=_DOWNLOAD_JS))
@@ -167,6 +171,7 @@ class ExplorerSession:
         return column(row(head, csv_load, csv_sep, png), row(column(*sections, width=CONTROL_WIDTH + 10), right))
 
     def _show_mode(self, state) -> None:
+        self.derived.height = DERIVED_HEIGHT[state.mode]
         for key, control in self.controls.items():
             f = self.fields[key]
             visible = f.mode in (None, state.mode) and (f.group is None or f.group == state["heights"])
@@ -269,8 +274,9 @@ class ExplorerSession:
         kept = ["the plots and numbers show the last valid parameters"] if errors and self.result else []
         warnings = (*self.result.warnings, *self.panel_messages) if self.result is not None and \
             self.good == self.pending else ()
-        self.messages.text = (_html_list(errors, "error") + _html_list(warnings, "warning")
-                              + _html_list(self.link_messages + kept, "note"))
+        text = (_html_list(errors, "error") + _html_list(warnings, "warning")
+                + _html_list(self.link_messages + kept, "note"))
+        self.messages.text = text or '<div class="quiet">no warnings from the library for this view</div>'
 
     @staticmethod
     def _derived_html(result) -> str:
