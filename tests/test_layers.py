@@ -30,7 +30,7 @@ LAYERS = [
     ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch"}),
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
-    ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),
+    ("curves", {"curves", "load_control", "pull_off_search", "cycle", "interaction"}),
     ("physical", {"materials", "physical", "surface", "regimes", "topography"}),
     ("applications", {"fit", "sweeps", "validation"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),

@@ -64,6 +64,7 @@ _SUBMODULES = (
     "groups",
     "heights",
     "hertz",
+    "interaction",
     "jkr",
     "materials",
     "maugis_dugdale",
@@ -75,6 +76,7 @@ _SUBMODULES = (
     "studies",
     "topography",
     "units",
+    "validation",
 )
 
 __all__ = [

@@ -26,6 +26,7 @@ EXTRAS = {
     "pint": "units",
     "mpmath": "reference",
     "SurfaceTopography": "topography",
+    "ContactMechanics": "bem",
     "lmfit": "fit",
     "xarray": "sweep",
     "dask": "sweep",
@@ -34,7 +35,6 @@ EXTRAS = {
     "h5netcdf": "sweep",
     "tqdm": "sweep",
     "bokeh": "explore",
-    "ContactMechanics": "bem",
 }
 
 

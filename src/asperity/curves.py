@@ -22,6 +22,7 @@ from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import as_float_array, scalar
 from .asperity_law import ContactLaw, ModelParameters, check_law
 from .heights import GAUSSIAN, HeightDistribution
+from .interaction import as_interaction
 from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
 from .multi_asperity import friction_coefficient, mean_pressure
 from .quantities import CURVE_COLUMNS
@@ -88,12 +89,17 @@ class Model:
     law : ContactLaw, optional
         Per-asperity law built for these parameters (default: ``AsperityLaw``, Hertz or
         Maugis-Dugdale); an elastic-plastic law plugs in here.
+    interaction : None, 'none' or an interaction object, optional
+        Asperity interaction (:mod:`asperity.interaction`): None (default) is plain GW;
+        a :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood &
+        Paggi 2008) makes ``d`` the apparent separation from the undeformed surface
+        (non-adhesive models only).
 
     Raises
     ------
     ValueError
-        If a parameter is out of its range, ``heights`` is not a HeightDistribution or
-        ``law`` not a ContactLaw for these parameters.
+        If a parameter is out of its range, ``heights`` is not a HeightDistribution,
+        ``law`` not a ContactLaw for these parameters, or ``interaction`` unknown.
 
     Examples
     --------
@@ -104,13 +110,15 @@ class Model:
     """
 
     def __init__(self, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
-                 heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None):
+                 heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None, interaction=None):
         kwargs = {} if friction is None else {"friction": friction}
         self.params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
         if not isinstance(heights, HeightDistribution):
             raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
         self.heights = heights
         self.law = check_law(law, self.params)
+        #: Asperity interaction (:mod:`asperity.interaction`); plain GW by default.
+        self.interaction = as_interaction(interaction, adhesive=self.params.adhesive)
         #: Largest valid separation: beyond it every quantity underflows.
         self.d_top = D_MAX - self.law.u_end
         #: Default reach of the pull-off search: 10 sigma past the end of the stable branch.
@@ -130,6 +138,8 @@ class Model:
     def _parameters(self):
         p = asdict(self.params)
         p["friction"] = repr(self.params.friction)
+        if self.interaction.active:
+            p["interaction"] = repr(self.interaction)
         return p
 
     def _result(self, d, sums) -> CurveResult:
@@ -143,7 +153,14 @@ class Model:
         """All quantities at separations ``d``: :func:`separation_curve` for this model."""
         d = check_separation(d, d_max=self.d_top).ravel()
         tab = self.tabulation(float(d.min()), max(float(d.max()), 10.0))
-        return self._result(d, tab.sums(d)[0])
+        if not self.interaction.active:
+            return self._result(d, tab.sums(d)[0])
+        # Interaction hook: the asperities feel the local separation d_loc = d + Delta(P(d_loc)) <= d + Delta(P(d)).
+        reach = min(float(np.max(d + self.interaction.shift(tab.sums(d)[0][:, 1]))), self.d_top)
+        tab = self.tabulation(float(d.min()), max(reach, 10.0))
+        d_loc = np.minimum(self.interaction.local_separation(
+            d, lambda x: tuple(s[:, 1] for s in tab.sums(np.minimum(x, reach), order=1))), reach)
+        return self._result(d, tab.sums(d_loc)[0])
 
     def pull_off(self, d_max: float | None = None) -> PullOff:
         """Largest tensile force for -3 <= d/sigma <= ``d_max``: :func:`pull_off` for this model (cached).
@@ -184,11 +201,12 @@ class Model:
                              f"load; got min {P.min():g}")
         d, sums = invert_branch(branch.tab, P, branch.grid, branch.P, branch.dP)
         sums[:, 1] = P  # solved for to rounding; report the load asked for
-        return self._result(d, sums)
+        # Interaction hook: the apparent separation is the local one less the uniform sinking.
+        return self._result(d - self.interaction.shift(P), sums)
 
 
 def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
-                     heights=GAUSSIAN) -> CurveResult:
+                     heights=GAUSSIAN, interaction=None) -> CurveResult:
     r"""Normal and friction force, :math:`\mu`, area, pressure and contacts versus separation (Figs 7-8).
 
     .. math::
@@ -218,6 +236,11 @@ def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
         Asperity heights (default: ``Gaussian()``, Eq 19).
+    interaction : None, 'none' or an interaction object, optional
+        Asperity interaction (:mod:`asperity.interaction`; default None, plain GW): with a
+        :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood & Paggi
+        2008, non-adhesive only) ``d`` is the apparent separation from the undeformed
+        surface, the asperities sitting at :math:`d_{loc} = d + k\bar P`.
 
     Returns
     -------
@@ -243,11 +266,11 @@ def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
     Adams et al., Eqs (1), (5), (6), (10), (18), (21); Figs 7-8.
     """
     return Model(alpha, beta, gamma, nu=nu, h_over_b=h_over_b, friction=friction,
-                 heights=heights).separation_curve(d)
+                 heights=heights, interaction=interaction).separation_curve(d)
 
 
 def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
-               heights=GAUSSIAN) -> CurveResult:
+               heights=GAUSSIAN, interaction=None) -> CurveResult:
     r"""All quantities at the stable separation for each normal load (Figs 3-6, 9).
 
     The separation under a load :math:`P` is the first one, coming from full contact, where
@@ -276,6 +299,11 @@ def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
         Asperity heights (default: ``Gaussian()``, Eq 19).
+    interaction : None, 'none' or an interaction object, optional
+        Asperity interaction (:mod:`asperity.interaction`; default None, plain GW): with a
+        :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood & Paggi
+        2008, non-adhesive only) ``d`` is the apparent separation from the undeformed
+        surface, the asperities sitting at :math:`d_{loc} = d + k\bar P`.
 
     Returns
     -------
@@ -303,7 +331,7 @@ def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None
     Adams et al., Eqs (1), (6), (10), (18), (21); Figs 3-6, 9.
     """
     return Model(alpha, beta, gamma, nu=nu, h_over_b=h_over_b, friction=friction,
-                 heights=heights).load_curve(P)
+                 heights=heights, interaction=interaction).load_curve(P)
 
 
 def pull_off(alpha, beta, gamma, *, nu=0.3, h_over_b=1.0, friction=None, heights=GAUSSIAN,

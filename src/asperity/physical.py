@@ -47,6 +47,7 @@ from ._validation import as_float_array, check_nonnegative, check_positive, chec
 from .curves import CurveResult, Model, PullOff
 from .friction_stress import ConstantShear, FrictionLaw
 from .heights import GAUSSIAN, HeightDistribution
+from .interaction import interaction_for_surface
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
 from .quantities import CURVE_COLUMNS
@@ -176,6 +177,11 @@ class PhysicalContact:
         :math:`\gamma = 0`, the Hertz model.  False: :math:`\gamma = 0` (Hertz) whatever ``w``.
     heights : HeightDistribution
         Summit heights in units of :math:`\sigma_s` (default Gaussian, Eq 19).
+    interaction : str, optional
+        Asperity interaction, a name of :data:`asperity.interaction.INTERACTIONS`:
+        ``'none'`` (default, plain GW) or ``'cgp2008'``, the mean-field correction of
+        Ciavarella, Greenwood & Paggi (2008) over this surface's nominal area (non-adhesive:
+        needs ``adhesion=False``); then separations are measured from the undeformed surface.
 
     Examples
     --------
@@ -185,7 +191,7 @@ class PhysicalContact:
     """
 
     def __init__(self, material: Material | str, surface: Surface, *, h=None, friction=None,
-                 adhesion: bool = True, heights: HeightDistribution = GAUSSIAN):
+                 adhesion: bool = True, heights: HeightDistribution = GAUSSIAN, interaction=None):
         self.material = as_material(material)
         if not isinstance(surface, Surface):
             raise ValueError(f"surface must be an asperity.surface.Surface, got {surface!r}")
@@ -199,6 +205,12 @@ class PhysicalContact:
             check_scalar_positive(self.material.h if h is None else h, "h", "m")
         self.friction = self._friction_law(friction)
         self.heights = heights
+        s = surface
+        self.interaction = interaction_for_surface(interaction, eta=s.eta, area=s.area, b=self.material.b,
+                                                   sigma_s=s.sigma_s, nu=self.material.nu)
+        if self.interaction.active and self.gamma > 0:
+            raise ValueError(f"interaction {self.interaction.name!r} (Ciavarella, Greenwood & Paggi 2008) is "
+                             "derived for non-adhesive contact; pass adhesion=False or interaction='none'")
 
     def _friction_law(self, friction) -> FrictionLaw | None:
         if friction is None or isinstance(friction, FrictionLaw):
@@ -280,7 +292,7 @@ class PhysicalContact:
         """The dimensionless :class:`~asperity.Model` with these alpha, beta, gamma, nu, h/b."""
         kwargs = {} if self.friction is None else {"friction": self.friction}
         return Model(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b,
-                     heights=self.heights, **kwargs)
+                     heights=self.heights, interaction=self.interaction, **kwargs)
 
     def parameters(self) -> dict:
         """Inputs, groups and scales (SI units) as a flat dict."""
@@ -289,7 +301,8 @@ class PhysicalContact:
                 "b_m": self.b, "w_J_m2": self.w, "h_m": self.h, "sigma_s_m": s.sigma_s, "R_m": s.R,
                 "eta_per_m2": s.eta, "area_m2": s.area, "N": self.N, "alpha": self.alpha, "beta": self.beta,
                 "gamma": self.gamma, "lambda": self.lam, "force_scale_N": self.force_scale,
-                "area_scale_m2": self.area_scale, "friction": repr(self.model.params.friction)}
+                "area_scale_m2": self.area_scale, "friction": repr(self.model.params.friction),
+                "interaction": self.interaction.name}
 
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:

@@ -33,6 +33,7 @@ __all__ = [
     "MODEL_PARAMETERS",
     "PHYSICAL_PARAMETERS",
     "CURVE_COLUMNS",
+    "VALIDATION_COLUMNS",
     "quantity",
 ]
 
@@ -158,6 +159,44 @@ CURVE_COLUMNS = _registry(
              si_meaning="mean pressure over the real contact area, P/area (NaN without contact)", log=True),
     Quantity("contacts", "n/N", "fraction of asperities in contact n/N", si_name="contacts", si_unit="1",
              si_meaning="number of asperities in contact"),
+)
+
+
+def _column(name: str, symbol: str, unit: str, meaning: str, log: bool = False) -> Quantity:
+    """An SI-only column (its name is its SI name)."""
+    return Quantity(name, symbol, meaning, unit=unit, si_name=name, si_unit=unit, si_meaning=meaning, log=log)
+
+
+#: Columns of a side-by-side check against a boundary-element solution
+#: (:class:`asperity.validation.SurfaceValidation`), SI units, in output order.  ``spectral``
+#: and ``detected`` are the two estimates of the GW summit parameters (:mod:`asperity.topography`).
+VALIDATION_COLUMNS = _registry(
+    _column("P_N", "P", "N", "total normal force on the scanned area, compressive > 0", log=True),
+    _column("p_Pa", r"\bar p", "Pa", "nominal pressure P/A0", log=True),
+    _column("fraction_bem", "A/A_0", "1", "boundary-element real contact area over nominal area", log=True),
+    _column("area_bem_m2", "A_{BEM}", "m^2", "boundary-element real contact area (contact pixels x pixel area)",
+            log=True),
+    _column("area_spectral_m2", "A_{GW}", "m^2", "statistical-model real contact area, spectral summit parameters",
+            log=True),
+    _column("area_detected_m2", "A_{GW}", "m^2", "statistical-model real contact area, detected summit parameters",
+            log=True),
+    _column("dev_spectral", r"A_{GW}/A_{BEM}-1", "1", "deviation of the spectral model area from the BEM area"),
+    _column("dev_detected", r"A_{GW}/A_{BEM}-1", "1", "deviation of the detected model area from the BEM area"),
+    _column("gap_bem_m", r"\bar g", "m", "boundary-element mean gap between the flat and the deformed surface"),
+    _column("gap_spectral_m", r"\bar g", "m", "statistical-model mean gap (local separation + mean summit "
+            "height), spectral"),
+    _column("gap_detected_m", r"\bar g", "m", "statistical-model mean gap (local separation + mean summit "
+            "height), detected"),
+    _column("sep_bem_m", "s", "m", "approach: distance of the flat from the undeformed mean plane "
+            "(non-periodic BEM only; NaN for periodic)"),
+    _column("sep_spectral_m", "s", "m", "statistical-model distance of the flat from the undeformed mean plane, "
+            "spectral"),
+    _column("sep_detected_m", "s", "m", "statistical-model distance of the flat from the undeformed mean plane, "
+            "detected"),
+    _column("spots_bem", "n_{spots}", "1", "boundary-element number of contact spots (connected contact regions)"),
+    _column("contacts_spectral", "n", "1", "statistical-model number of asperities in contact, spectral"),
+    _column("contacts_detected", "n", "1", "statistical-model number of asperities in contact, detected"),
+    _column("iterations_bem", "it", "1", "constrained conjugate-gradient iterations of the BEM solve"),
 )
 
 

@@ -35,6 +35,8 @@ __all__ = [
     "add_model_arguments",
     "add_contact_arguments",
     "add_output_arguments",
+    "add_surface_arguments",
+    "read_kwargs_from_args",
     "is_physical",
     "model_from_args",
     "contact_from_args",
@@ -249,6 +251,26 @@ def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
     ph.add_argument("--area", help=f"{_meaning('area')}, an area (e.g. 1mm^2)")
     ph.add_argument("--no-adhesion", action="store_true",
                     help="ignore the material's work of adhesion (Hertz contacts, gamma = 0)")
+
+
+def add_surface_arguments(parser: argparse.ArgumentParser) -> None:
+    """A measured surface: ``FILE --size --unit --fill-undefined`` (as ``asperity surface``)."""
+    parser.add_argument("file", help="height map or profile file")
+    parser.add_argument("--size", help="scan size when the file stores none: Lx,Ly or L with units "
+                                       "(e.g. 10um,10um)")
+    parser.add_argument("--unit", help="height/length unit when the file stores none (e.g. nm)")
+    parser.add_argument("--fill-undefined", action="store_true",
+                        help="fill missing (NaN) pixels by interpolation")
+
+
+def read_kwargs_from_args(args) -> dict:
+    """Keyword arguments of :func:`asperity.topography.read_topography` from :func:`add_surface_arguments`."""
+    kwargs = {"fill_undefined": args.fill_undefined}
+    if args.size:
+        kwargs["physical_sizes"] = tuple(quantity_items(args.size, "m", "--size"))
+    if args.unit:
+        kwargs["unit"] = args.unit
+    return kwargs
 
 
 def add_output_arguments(parser: argparse.ArgumentParser, plot: bool = True) -> None:
