@@ -182,17 +182,17 @@ def test_csv_download_is_the_librarys_csv():
 
 def test_changes_during_a_computation_merge_into_one_update():
     jobs = []
-    s = ExplorerSession(Document(), None, runner=lambda state, done: jobs.append((state, done)))
+    s = ExplorerSession(Document(), None, runner=lambda work, done: jobs.append((work, done)))
     assert jobs == []  # the first view is computed at once
     c = s.controls["beta"]
     for text in ("300", "400", "500"):
         c.text.value = text
-    assert len(jobs) == 1 and jobs[0][0]["beta"] == 300.0  # one computation at a time
-    state, done = jobs.pop()
-    done(state, asperity.explorer.app.attempt(state))
-    assert len(jobs) == 1 and jobs[0][0]["beta"] == 500.0  # then only the latest
-    state, done = jobs.pop()
-    done(state, asperity.explorer.app.attempt(state))
+    assert len(jobs) == 1 and s.attempted["beta"] == 300.0  # one computation at a time
+    work, done = jobs.pop()
+    done(work())
+    assert len(jobs) == 1 and s.attempted["beta"] == 500.0  # then only the latest
+    work, done = jobs.pop()
+    done(work())
     assert jobs == [] and query_state(s)["beta"] == 500.0
     assert_shows(s, default_state().replace(beta=500.0))
 

@@ -7,6 +7,7 @@ the page opens is recorded; any that leaves 127.0.0.1/localhost fails the test. 
 a browser (or Playwright) the tests skip, unless ASPERITY_REQUIRE_BROWSER=1.
 """
 
+import importlib.util
 from urllib.parse import parse_qs
 
 import numpy as np
@@ -186,3 +187,20 @@ def test_missing_browser_skips_or_fails_as_ci_wants(monkeypatch):
     monkeypatch.setenv(browser.REQUIRE, "1")
     with pytest.raises(pytest.fail.Exception, match="ASPERITY_REQUIRE_BROWSER=1"):
         browser.need_browser()
+
+
+@pytest.mark.skipif(importlib.util.find_spec("asperity.cycle") is None,
+                    reason="asperity.cycle is not installed (the approach/retract panel is optional)")
+def test_cycle_panel_in_the_browser(page, server):
+    from asperity.cycle import cycle
+
+    load(page, server.url + "?n=40")
+    page.locator(".asp-toggle-cycle input").check()
+    page.wait_for_function("() => { const m = Bokeh.documents[0].get_model_by_name('cycle:retract'); "
+                           "return m && m.data.P.length > 0; }")
+    p = params(page)
+    ref = cycle(float(p["alpha"]), float(p["beta"]), float(p["gamma"]), preload=float(p["P_max"]), n=40)
+    shown = source_data(page, "cycle:retract")
+    np.testing.assert_allclose(shown["P"], ref.retract.P, rtol=1e-12)
+    np.testing.assert_allclose(source_data(page, "cycle:approach")["d"], ref.approach.d, rtol=1e-12)
+    assert_plotted(page, *library_curves(p)[:2])  # the other plots are untouched

@@ -3,7 +3,7 @@
 import importlib.util
 import sys
 import types
-from dataclasses import dataclass
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -12,34 +12,39 @@ pytest.importorskip("bokeh")
 
 from bokeh.document import Document  # noqa: E402
 
+import asperity  # noqa: E402
 from asperity.explorer import panels  # noqa: E402
 from asperity.explorer.app import ExplorerSession, immediate_runner  # noqa: E402
 
 HAS_CYCLE = importlib.util.find_spec("asperity.cycle") is not None
 
 
-@dataclass(frozen=True)
-class FakeCycle:
-    """A stand-in cycle result: the columns a CycleResult has (``branch``, ``d``, ``P``)."""
-
-    d: np.ndarray
-    P: np.ndarray
-    branch: np.ndarray
-
-    def columns(self):
-        return {"d": self.d, "P": self.P, "branch": self.branch}
-
-
-def fake_cycle_module(calls):
+def fake_cycle_module(calls, fail=None):
+    """A stand-in asperity.cycle with the real module's call and result shape."""
     module = types.ModuleType("asperity.cycle")
 
-    def cycle_curve(subject, P_max):
-        calls.append((subject, P_max))
+    def cycle(alpha, beta, gamma=0.0, *, preload=None, n=200, nu=0.3, h_over_b=1.0, friction=None, heights=None):
+        calls.append({"alpha": alpha, "beta": beta, "gamma": gamma, "preload": preload, "n": n, "nu": nu,
+                      "h_over_b": h_over_b, "friction": friction, "heights": heights})
+        if fail:
+            raise ValueError(fail)
         d = np.linspace(0.0, 2.0, 5)
-        return FakeCycle(np.r_[d, d[::-1]], np.r_[P_max - d, -d[::-1]], np.array(["approach"] * 5 + ["retract"] * 5))
+        return SimpleNamespace(approach=SimpleNamespace(d=d[::-1], P=preload - d[::-1]),
+                               retract=SimpleNamespace(d=d, P=-d), pull_off=SimpleNamespace(force=1.5, d=1.2,
+                                                                                            exists=True))
 
-    module.cycle_curve = cycle_curve
+    module.cycle = cycle
     return module
+
+
+@pytest.fixture()
+def with_cycle(monkeypatch):
+    def install(module):
+        monkeypatch.setitem(sys.modules, "asperity.cycle", module)
+        real = importlib.util.find_spec
+        monkeypatch.setattr(importlib.util, "find_spec",
+                            lambda name, *a: object() if name == "asperity.cycle" else real(name, *a))
+    return install
 
 
 @pytest.mark.skipif(HAS_CYCLE, reason="asperity.cycle is installed: the real panel is tested below")
@@ -49,36 +54,42 @@ def test_no_cycle_no_panel():
     assert s.panels == []
 
 
-def test_cycle_panel_plots_each_branch(monkeypatch):
+def test_cycle_panel_is_off_until_asked_then_plots_each_branch(with_cycle):
     calls = []
-    monkeypatch.setitem(sys.modules, "asperity.cycle", fake_cycle_module(calls))
-    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: object() if name == "asperity.cycle" else None)
+    with_cycle(fake_cycle_module(calls))
+    s = ExplorerSession(Document(), "n=20&alpha=0.004&nu=0.25", runner=immediate_runner)
+    (panel,) = s.panels
+    assert isinstance(panel, panels.CyclePanel) and calls == [] and panel.figure not in panel.layout.children
+    panel.toggle.active = True  # the user asks for it: the same view, with the cycle
+    assert panel.figure in panel.layout.children and len(calls) == 1
+    call = calls[0]
+    assert (call["alpha"], call["nu"], call["n"], call["preload"]) == (0.004, 0.25, 20, s.result.load.P.max())
+    assert call["friction"] == asperity.HurtadoKim() and isinstance(call["heights"], asperity.heights.Gaussian)
+    np.testing.assert_array_equal(panel.sources["retract"].data["P"], -np.linspace(0, 2, 5))
+    assert list(panel.marker.data["P"]) == [-1.5]
+    s.controls["beta"].text.value = "300"  # every update now computes the cycle too
+    assert len(calls) == 2 and calls[-1]["beta"] == 300.0
+    panel.toggle.active = False
+    s.controls["beta"].text.value = "400"
+    assert len(calls) == 2 and panel.figure not in panel.layout.children
+
+
+def test_a_failing_panel_is_a_message_not_a_crash(with_cycle):
+    with_cycle(fake_cycle_module([], fail="no retract branch for these loads"))
     s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
-    assert len(s.panels) == 1 and isinstance(s.panels[0], panels.CyclePanel)
-    subject, P_max = calls[-1]
-    assert subject is s.result.subject and P_max == s.result.load.P.max()
-    approach, retract = (s.panels[0].sources[b].data for b in ("approach", "retract"))
-    np.testing.assert_array_equal(approach["P"], P_max - np.linspace(0, 2, 5))
-    np.testing.assert_array_equal(retract["d"], np.linspace(0, 2, 5)[::-1])
-
-
-def test_a_failing_panel_is_a_message_not_a_crash(monkeypatch):
-    calls = []
-    module = fake_cycle_module(calls)
-
-    def broken(subject, P_max):
-        raise ValueError("no retract branch for these loads")
-
-    module.cycle_curve = broken
-    monkeypatch.setitem(sys.modules, "asperity.cycle", module)
-    monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: object() if name == "asperity.cycle" else None)
-    s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
-    assert s.result is not None and "no retract branch" in s.messages.text
+    s.panels[0].toggle.active = True
+    assert s.failure is None and "no retract branch" in s.messages.text
+    assert 'class="warning"' in s.messages.text
 
 
 @pytest.mark.skipif(not HAS_CYCLE, reason="asperity.cycle is not installed (the panel is optional)")
 def test_real_cycle_panel():
+    from asperity.cycle import cycle
+
     panel = panels.cycle_panel()
-    assert panel is not None, "asperity.cycle exists but has no cycle_curve: update explorer/panels.py"
-    s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
-    assert s.panels and all(len(src.data["d"]) for src in s.panels[0].sources.values())
+    assert panel is not None, "asperity.cycle exists but has no cycle(): update explorer/panels.py"
+    s = ExplorerSession(Document(), "n=30", runner=immediate_runner)
+    s.panels[0].toggle.active = True
+    assert s.failure is None, s.failure
+    ref = cycle(0.003, 1000.0, 1e-3, preload=1e5, n=30)
+    np.testing.assert_allclose(s.panels[0].sources["retract"].data["P"], ref.retract.P, rtol=1e-12)

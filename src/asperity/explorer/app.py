@@ -107,9 +107,9 @@ class ExplorerSession:
     query : str or mapping, optional
         The page's query string (or Tornado's parsed arguments).
     runner : callable, optional
-        ``runner(state, done)`` computes a state and calls ``done(state, outcome)`` on the
-        document's thread, ``outcome`` being :func:`attempt`'s.  Default: in a worker thread
-        (:func:`threaded_runner`); tests pass :func:`immediate_runner`.
+        ``runner(work, done)`` calls ``work()`` (the library's computation of a view,
+        :func:`attempt`) and then ``done(outcome)`` on the document's thread.  Default: in a
+        worker thread (:func:`threaded_runner`); tests pass :func:`immediate_runner`.
     """
 
     def __init__(self, doc, query=None, *, runner=None):
@@ -139,6 +139,8 @@ class ExplorerSession:
         self.page.js_on_change("download_count", CustomJS(args={"page": self.page}, code=_DOWNLOAD_JS))
         doc.js_on_event("document_ready", CustomJS(args={"page": self.page}, code=_URL_JS))
         self.panels = [panel for make in optional_panels() if (panel := make()) is not None]
+        for panel in self.panels:
+            panel.toggle.on_change("active", partial(self._toggled, panel))
         doc.add_root(self._layout())
         doc.add_root(self.page)
         doc.title = "asperity explore"
@@ -179,6 +181,8 @@ class ExplorerSession:
         self.sections["Model parameters"].visible = state.mode == MODES[0]
         self.sections["Physical contact"].visible = state.mode == MODES[1]
         self.plots.set_mode(state.mode == MODES[1])
+        for panel in self.panels:
+            panel.set_mode(state.mode == MODES[1])
 
     # -- changes ----------------------------------------------------------------------------
     def on_value(self, key: str, value) -> None:
@@ -211,6 +215,16 @@ class ExplorerSession:
             self.controls[k].set(v)
         return values
 
+    def _active_panels(self) -> tuple:
+        return tuple(p for p in self.panels if p.enabled)
+
+    def _toggled(self, panel, attr, old, new) -> None:
+        """A panel switched on or off: show or hide it, and compute it for the view shown."""
+        panel.set_enabled(bool(new))
+        if self.pending == self.attempted:
+            self.attempted = None  # the same view again, now with (or without) the panel
+        self.request()
+
     def on_error(self, key: str, message: str) -> None:
         """A control's text that is not a value: say so, keep the view."""
         self.errors[key] = message
@@ -222,7 +236,7 @@ class ExplorerSession:
         if self.busy or self.pending == self.attempted:
             return
         self.busy, self.attempted = True, self.pending
-        self.runner(self.pending, self._done)
+        self.runner(partial(attempt, self.pending, self._active_panels()), partial(self._done, self.pending))
 
     def _done(self, state, outcome) -> None:
         self.busy = False
@@ -232,7 +246,7 @@ class ExplorerSession:
     def update(self, state) -> bool:
         """Compute ``state`` now; show it if the library accepts it, else show why and keep the last view."""
         self.attempted = state
-        return self._apply(state, attempt(state))
+        return self._apply(state, attempt(state, self._active_panels()))
 
     def _apply(self, state, outcome) -> bool:
         if isinstance(outcome, str):
@@ -245,11 +259,11 @@ class ExplorerSession:
         self.plots.update(_compute.load_columns(result), _compute.separation_columns(result),
                           _compute.pull_off_columns(result))
         self.panel_messages = []
-        for panel in self.panels:
-            try:
-                panel.update(result)
-            except (ValueError, TypeError) as err:
-                self.panel_messages.append(f"{type(panel).__name__}: {err}")
+        for panel, data in result.extras.items():
+            if isinstance(data, str):
+                self.panel_messages.append(f"{panel.toggle.label.split(':')[0]}: {data}")
+            else:
+                panel.show(data)
         self.derived.text = self._derived_html(result)
         self.page.query = state.to_query(self.fields)
         self._show_messages()
@@ -294,19 +308,30 @@ class ExplorerSession:
         self.page.download_count += 1
 
 
-def attempt(state):
-    """:func:`asperity.explorer.compute.compute` of ``state``, or the library's message if it rejects it."""
-    try:
-        return _compute.compute(state)
-    except (ValueError, TypeError, ArithmeticError) as err:
+def _message(err: Exception) -> str:
+    if isinstance(err, ValueError | TypeError | ArithmeticError):
         return str(err) or type(err).__name__
-    except Exception as err:  # a bug: say so on the page rather than leave it waiting forever
-        return f"unexpected error ({type(err).__name__}: {err}); please report it with the page's address"
+    return f"unexpected error ({type(err).__name__}: {err}); please report it with the page's address"
 
 
-def immediate_runner(state, done) -> None:
+def attempt(state, panels=()):
+    """:func:`asperity.explorer.compute.compute` of ``state`` and the ``compute`` of each panel, or the
+    library's message if it rejects the view.  A panel's own error becomes its entry in ``extras``."""
+    try:
+        result = _compute.compute(state)
+    except Exception as err:  # noqa: BLE001 - a bug is shown too, rather than leave the page waiting
+        return _message(err)
+    for panel in panels:
+        try:
+            result.extras[panel] = panel.compute(result)
+        except Exception as err:  # noqa: BLE001
+            result.extras[panel] = _message(err)
+    return result
+
+
+def immediate_runner(work, done) -> None:
     """Compute at once, in this thread (for tests and scripts)."""
-    done(state, attempt(state))
+    done(work())
 
 
 _EXECUTOR: list = []
@@ -315,16 +340,16 @@ _EXECUTOR: list = []
 def threaded_runner(doc):
     """Compute in the explorer's worker thread (one for all pages, so computations never overlap);
     the result comes back to the document's thread through ``doc.add_next_tick_callback``."""
-    def run(state, done):
+    def run(work, done):
         if not _EXECUTOR:
             _EXECUTOR.append(ThreadPoolExecutor(max_workers=1, thread_name_prefix="asperity-explore"))
         def back(future):
             try:
-                doc.add_next_tick_callback(partial(done, state, future.result()))
+                doc.add_next_tick_callback(partial(done, future.result()))
             except Exception:  # noqa: BLE001 - the page was closed meanwhile: nothing to show
                 pass
 
-        _EXECUTOR[0].submit(attempt, state).add_done_callback(back)
+        _EXECUTOR[0].submit(work).add_done_callback(back)
     return run
 
 

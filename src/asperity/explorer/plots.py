@@ -17,7 +17,7 @@ in physical mode; axis labels and titles come from :data:`asperity.quantities.CU
 
 from __future__ import annotations
 
-from bokeh.layouts import gridplot
+from bokeh.layouts import column, row
 from bokeh.models import (
     BasicTickFormatter,
     ColumnDataSource,
@@ -122,9 +122,12 @@ class Plots:
                                 background_fill_alpha=0.7))
         x_sep.renderers = [force.renderers[0], tensile, self.figures["friction"].renderers[0]]
         f = self.figures
-        self.grid = gridplot([[f["mu"], f["pressure"], f["area"]], [f["force"], f["friction"], f["fraction"]]],
-                             toolbar_location="above", merge_tools=True)
-        self.grid.name = "plots"
+        for fig in f.values():
+            fig.toolbar.autohide = True  # each plot's tools show when the pointer is over it
+        # Rows in a column rather than a GridPlot: BokehJS (3.9) garbles a GridPlot's plots when
+        # another plot joins the page later (the optional panels do).
+        self.grid = column(row(f["mu"], f["pressure"], f["area"]), row(f["force"], f["friction"], f["fraction"]),
+                           name="plots")
         self.layout = self.grid
         self.set_mode(physical=False)
 
