@@ -101,7 +101,8 @@ class ExplorerProcess:
 
 @contextmanager
 def open_browser(**context_options):
-    """A Playwright browser context of Debian's Chromium with a fresh user-data directory."""
+    """A Playwright browser context of Debian's Chromium with a fresh user-data directory
+    (its path in the context's ``profile_dir``)."""
     from playwright.sync_api import sync_playwright
 
     profile = tempfile.mkdtemp(prefix="asperity-chromium-")
@@ -110,6 +111,7 @@ def open_browser(**context_options):
             context = p.chromium.launch_persistent_context(
                 profile, executable_path=CHROMIUM, args=CHROMIUM_ARGS, headless=True, accept_downloads=True,
                 **{"viewport": {"width": 1440, "height": 1000}, **context_options})
+            context.profile_dir = profile
             try:
                 yield context
             finally:

@@ -52,8 +52,8 @@ def test_first_view_is_the_librarys():
     s = session()
     assert s.good == default_state() and query_state(s) == default_state()
     assert_shows(s, default_state())
-    assert "λ" in s.derived.text and "Maugis-Dugdale" in s.derived.text
-    assert "no warnings" in s.messages.text and "error" not in s.messages.text
+    assert "λ" in s.page.derived_html and "Maugis-Dugdale" in s.page.derived_html
+    assert "no warnings" in s.page.messages_html and "error" not in s.page.messages_html
 
 
 def test_controls_are_built_from_the_registry():
@@ -93,7 +93,7 @@ def test_zero_gamma_is_typed_and_turns_adhesion_off():
     s.controls["gamma"].text.value = "0"
     assert s.controls["gamma"].slider.value == s.controls["gamma"].slider.start
     assert query_state(s)["gamma"] == 0.0 and list(s.plots.pull_off.data["d"]) == []
-    assert "no adhesion" in s.derived.text
+    assert "no adhesion" in s.page.derived_html
 
 
 @pytest.mark.parametrize("key, text, needle", [
@@ -110,13 +110,13 @@ def test_invalid_values_show_a_message_and_keep_the_last_view(key, text, needle)
     if needle is None:  # valid: for contrast
         assert query_state(s)["n"] == 5 and len(s.plots.load.data["P"]) == 5
         return
-    assert needle in s.messages.text and "class=\"error\"" in s.messages.text
-    assert "last valid parameters" in s.messages.text
+    assert needle in s.page.messages_html and "class=\"error\"" in s.page.messages_html
+    assert "last valid parameters" in s.page.messages_html
     assert s.page.query == url
     for k, v in before.items():
         np.testing.assert_array_equal(s.plots.load.data[k], v)
     s.controls[key].text.value = number_text(default_state()[key])  # back to valid: message gone
-    assert "no warnings" in s.messages.text and "error" not in s.messages.text
+    assert "no warnings" in s.page.messages_html and "error" not in s.page.messages_html
 
 
 def test_material_menu_and_custom_values():
@@ -151,13 +151,13 @@ def test_mode_switch_shows_the_physical_contact_in_si_units():
 
 def test_warning_of_the_library_is_shown():
     s = session("mode=physical&P_max_N=3000")
-    assert "above 10 %" in s.messages.text and 'class="warning"' in s.messages.text
+    assert "above 10 %" in s.page.messages_html and 'class="warning"' in s.page.messages_html
 
 
 def test_rejected_link_falls_back_to_the_defaults():
     s = session("alpha=-2&foo=1")
     assert s.good == default_state()
-    assert "unknown parameter" in s.messages.text and "rejected" in s.messages.text
+    assert "unknown parameter" in s.page.messages_html and "rejected" in s.page.messages_html
     assert s.controls["alpha"].text.value == number_text(START["alpha"])
     assert_shows(s, default_state())
 
@@ -207,4 +207,4 @@ def test_unexpected_errors_are_messages_too(monkeypatch):
 
     monkeypatch.setattr(compute_module, "compute", broken)
     s.controls["beta"].text.value = "300"
-    assert "unexpected error (IndexError: boom)" in s.messages.text
+    assert "unexpected error (IndexError: boom)" in s.page.messages_html

@@ -78,8 +78,8 @@ def test_a_failing_panel_is_a_message_not_a_crash(with_cycle):
     with_cycle(fake_cycle_module([], fail="no retract branch for these loads"))
     s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
     s.panels[0].toggle.active = True
-    assert s.failure is None and "no retract branch" in s.messages.text
-    assert 'class="warning"' in s.messages.text
+    assert s.failure is None and "no retract branch" in s.page.messages_html
+    assert 'class="warning"' in s.page.messages_html
 
 
 @pytest.mark.skipif(not HAS_CYCLE, reason="asperity.cycle is not installed (the panel is optional)")

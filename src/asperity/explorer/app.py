@@ -53,15 +53,26 @@ DERIVED_HEIGHT = {"dimensionless": 112, "physical": 176}
 
 
 class PageState(DataModel):
-    """What the server tells the page: its query string, and a file to download."""
+    """What the server tells the page: its query string, the HTML of the messages and numbers, a file to download."""
 
     query = String(default="", help="the view's query string, without '?'")
+    messages_html = String(default="", help="errors, warnings and notes")
+    derived_html = String(default="", help="the table of derived numbers")
     download_name = String(default="")
     download_text = String(default="")
     download_count = Int(default=0, help="incremented for each download request")
 
 
 _URL_JS = "history.replaceState(history.state, '', window.location.pathname + '?' + page.query);"
+#: Writes the messages and numbers into their (fixed-size) Divs' boxes directly: a change of a
+#: Div's text would make BokehJS lay the whole page out again and repaint every plot.
+_PANELS_JS = """
+for (const [div, html] of [[messages, page.messages_html], [derived, page.derived_html]]) {
+  const view = Bokeh.index.find_one(div);
+  const box = view == null ? null : view.shadow_el.querySelector('.asp-box');
+  if (box != null && box.innerHTML !== html) box.innerHTML = html;
+}
+"""
 _DOWNLOAD_JS = """
 const blob = new Blob([page.download_text], {type: 'text/csv'});
 const a = document.createElement('a');
@@ -130,14 +141,20 @@ class ExplorerSession:
         self.mode.on_change("active", lambda attr, old, new: self.on_value("mode", MODES[new]))
         self.plots = Plots()
         # Fixed heights: new text never moves the plots (a moved plot repaints; updates stay quick).
-        self.messages = Div(text="", width=1080, height=MESSAGES_HEIGHT, name="messages", css_classes=["asp-messages"],
+        # Fixed sizes and content written by _PANELS_JS: new text never re-lays the page out.
+        box = '<div class="asp-box"></div>'
+        self.messages = Div(text=box, width=1080, height=MESSAGES_HEIGHT, name="messages", css_classes=["asp-messages"],
                             stylesheets=[InlineStyleSheet(css=_STYLE)], styles={"overflow-y": "auto"})
-        self.derived = Div(text="", width=1080, height=DERIVED_HEIGHT[MODES[0]], name="derived",
+        self.derived = Div(text=box, width=1080, height=DERIVED_HEIGHT[MODES[0]], name="derived",
                            css_classes=["asp-derived"], stylesheets=[InlineStyleSheet(css=_STYLE)])
         self.page = PageState(query="", name="page")
         self.page.js_on_change("query", CustomJS(args={"page": self.page}, code=_URL_JS))
         self.page.js_on_change("download_count", CustomJS(args={"page": self.page}, code=_DOWNLOAD_JS))
+        write = CustomJS(args={"page": self.page, "messages": self.messages, "derived": self.derived}, code=_PANELS_JS)
+        self.page.js_on_change("messages_html", write)
+        self.page.js_on_change("derived_html", write)
         doc.js_on_event("document_ready", CustomJS(args={"page": self.page}, code=_URL_JS))
+        doc.js_on_event("document_ready", write)
         self.panels = [panel for make in optional_panels() if (panel := make()) is not None]
         for panel in self.panels:
             panel.toggle.on_change("active", partial(self._toggled, panel))
@@ -264,7 +281,7 @@ class ExplorerSession:
                 self.panel_messages.append(f"{panel.toggle.label.split(':')[0]}: {data}")
             else:
                 panel.show(data)
-        self.derived.text = self._derived_html(result)
+        self.page.derived_html = self._derived_html(result)
         self.page.query = state.to_query(self.fields)
         self._show_messages()
         return True
@@ -290,7 +307,7 @@ class ExplorerSession:
             self.good == self.pending else ()
         text = (_html_list(errors, "error") + _html_list(warnings, "warning")
                 + _html_list(self.link_messages + kept, "note"))
-        self.messages.text = text or '<div class="quiet">no warnings from the library for this view</div>'
+        self.page.messages_html = text or '<div class="quiet">no warnings from the library for this view</div>'
 
     @staticmethod
     def _derived_html(result) -> str:
