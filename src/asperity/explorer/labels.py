@@ -44,9 +44,16 @@ def unit_text(unit: str) -> str:
 
 
 def axis_label(q: Quantity, physical: bool) -> str:
-    """Axis label of a curve column: the symbol in dimensionless mode, name and SI unit in physical mode."""
-    if not physical or not q.si_unit or q.si_unit == "1":
+    """Axis label of a curve column: the symbol in dimensionless mode, name and SI unit in physical mode.
+
+    >>> from asperity.quantities import CURVE_COLUMNS as C
+    >>> axis_label(C["P"], False), axis_label(C["P"], True), axis_label(C["contacts"], True), axis_label(C["mu"], True)
+    ('P/NGb²', 'P (N)', 'n', 'μ')
+    """
+    if not physical or not q.si_unit:
         return plain(q.symbol)
+    if q.si_unit == "1":  # a count in physical mode (n, not n/N); mu stays mu
+        return plain(q.symbol).split("/")[0]
     return f"{q.name} ({unit_text(q.si_unit)})"
 
 
