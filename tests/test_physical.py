@@ -229,3 +229,18 @@ def test_shear_strength_as_string(surface):
     assert a.model.params.friction == ConstantShear(1e8 / a.G_star)
     with pytest.raises(ValueError, match=r"friction \(shear strength tau\) must be > 0 Pa"):
         PhysicalContact("Au", surface, friction=0.0)
+
+
+def test_validity_warnings_above_ten_percent_of_the_nominal_area():
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
+    curve = contact.load_curve([1.0, 1e3, 3e3])
+    fraction = curve.area / 1e-6  # real over nominal area, from the columns
+    assert fraction[0] < 0.1 < fraction[1] < fraction[2]
+    (message,) = curve.validity_warnings()
+    assert f"{100 * fraction[2]:.3g} %" in message and "from P = 1000 N" in message
+    assert physical.AREA_FRACTION_LIMIT == 0.1
+    assert contact.load_curve([1.0, 10.0]).validity_warnings() == []
+    assert curve.validity_warnings(limit=0.99) == []
+    assert len(curve.validity_warnings(limit=fraction[0] / 2)) == 1
+    with pytest.raises(ValueError, match="limit"):
+        curve.validity_warnings(limit=-0.1)

@@ -17,7 +17,7 @@ Layers, each importing only downward:
 * curves: :mod:`~asperity.curves`; loading-unloading cycles: :mod:`~asperity.cycle`
   (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); the paper's figures:
   :mod:`~asperity.studies`;
-  the command line: :mod:`~asperity.cli`
+  the command line: :mod:`~asperity.cli`; the browser explorer: :mod:`~asperity.explorer`
 
 Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
 the first use of a name below (``asperity.load_curve``) or of a submodule
@@ -73,6 +73,7 @@ _SUBMODULES = (
     "cycle",
     "dmt",
     "elastic_plastic",
+    "explorer",
     "friction_stress",
     "groups",
     "heights",

@@ -64,6 +64,7 @@ __all__ = [
     "PhysicalPullOff",
     "PHYSICAL_COLUMNS",
     "PHYSICAL_PLASTIC_COLUMNS",
+    "AREA_FRACTION_LIMIT",
     "surface_from_groups",
     "work_of_adhesion_from_gamma",
     "tabor_parameter",
@@ -77,6 +78,10 @@ __all__ = [
 PHYSICAL_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in CURVE_COLUMNS.items()}
 #: The optional column ``plastic`` (number of asperities past the critical interference), as above.
 PHYSICAL_PLASTIC_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in PLASTIC_COLUMNS.items()}
+
+#: Real over nominal contact area above which neighbouring contacts interact and the
+#: Greenwood-Williamson model of independent asperities degrades (:meth:`PhysicalCurve.validity_warnings`).
+AREA_FRACTION_LIMIT = 0.1
 
 
 def _out(x):
@@ -113,6 +118,18 @@ class PhysicalCurve:
         """Real over nominal contact area.  The GW model (independent asperities) needs it
         well below 1; above ~0.1 neighbouring contacts interact and the results degrade."""
         return self.area / self.nominal_area
+
+    def validity_warnings(self, limit: float = AREA_FRACTION_LIMIT) -> list[str]:
+        """Reasons to distrust the curve, as sentences: the real contact area above ``limit``
+        (default :data:`AREA_FRACTION_LIMIT`) of the nominal area.  Empty when there are none."""
+        limit = check_scalar_positive(limit, "limit")
+        fraction = self.area_fraction
+        over = np.flatnonzero(fraction > limit)
+        if over.size == 0:
+            return []
+        return [f"the real contact area reaches {100 * float(np.nanmax(fraction)):.3g} % of the nominal area "
+                f"(above {100 * limit:g} % from P = {float(self.P[over[0]]):.4g} N): neighbouring contacts "
+                "interact and the Greenwood-Williamson model of independent asperities degrades"]
 
     def __len__(self) -> int:
         return int(np.size(self.d))

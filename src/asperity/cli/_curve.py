@@ -48,9 +48,5 @@ def run_curve(args, kind: str) -> None:
     text = format_rows(curve_rows(curve), output_format(args))
     write_outputs(text, args, plot=plot)
     if physical:
-        import numpy as np
-
-        fraction = np.nanmax(curve.area_fraction)
-        if fraction > 0.1:
-            print(f"asperity: note: the real contact area reaches {fraction:.0%} of the nominal "
-                  "area; the GW model (independent asperities) is unreliable there", file=sys.stderr)
+        for warning in curve.validity_warnings():
+            print(f"asperity: note: {warning}", file=sys.stderr)
