@@ -179,7 +179,8 @@ def force_grid(tab: Tabulation, d_lo, d_hi, n=None):
     d_lo, d_hi : float
         Ends of the grid, :math:`d/\sigma`, ``d_lo < d_hi``.
     n : int, optional
-        Number of points, >= 2 (default: one per 0.05 sigma, clipped to 100..800).
+        Number of points, >= 2 (default: one per 0.15 sigma, clipped to 40..800; the cubic
+        Hermite guesses of :func:`branch_guess` and the pull-off search are good to ~1e-5 there).
 
     Returns
     -------
@@ -205,7 +206,7 @@ def force_grid(tab: Tabulation, d_lo, d_hi, n=None):
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi)
     if n is not None and (isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 2):
         raise ValueError(f"n (grid points) must be an integer >= 2, got {n!r}")
-    n = int(np.clip((d_hi - d_lo) / 0.05, 100, 800)) if n is None else int(n)
+    n = int(np.clip((d_hi - d_lo) / 0.15, 40, 800)) if n is None else int(n)
     grid = np.linspace(d_lo, d_hi, n)
     g0, g1 = tab.sums(grid, order=1)
     return grid, g0[:, 1], g1[:, 1]
@@ -262,7 +263,7 @@ def stable_branch(tab: Tabulation, d_lo, d_hi, *, d_top=None, P_min=None, pull_o
     i = int(np.argmin(Pg))
     if Pg[i] < 0:  # a pull-off force exists: the branch ends there; this grid locates it
         if pull_off is None:
-            pull_off = find_pull_off(tab, d_lo, d_hi, grid, Pg)
+            pull_off = find_pull_off(tab, d_lo, d_hi, grid, Pg, dPg)
         floor = -pull_off.force
         return Branch(np.append(grid[:i], pull_off.d), np.append(Pg[:i], floor), np.append(dPg[:i], 0.0), tab,
                       pull_off)

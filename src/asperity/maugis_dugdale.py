@@ -63,6 +63,17 @@ _K = np.arange(1, 31)
 _F1_COEF = (-1.0) ** (_K + 1) * 4.0 * _K / ((2 * _K - 1) * (2 * _K + 1))
 
 
+_F1_REVERSED = [float(c) for c in _F1_COEF[::-1]]
+
+
+def _horner(x: float) -> float:
+    """sum_k _F1_COEF[k] x^k by Horner's rule, as _f1 does on arrays (bitwise the same)."""
+    s = 0.0
+    for c in _F1_REVERSED:
+        s = s * x + c
+    return s
+
+
 def _f1(t):
     """First bracket of Eq (11): t + (t^2 - 1) atan t, without cancellation near t = 0."""
     t = np.asarray(t, dtype=float)
@@ -70,12 +81,15 @@ def _f1(t):
     t = np.atleast_1d(t)
     out = t + (t * t - 1.0) * np.arctan(t)
     small = t < _SERIES_T
-    if np.any(small):
+    if small.any():
         ts = t[small]
         t2 = ts * ts
-        series = np.zeros_like(ts)
-        for c in _F1_COEF[::-1]:  # Horner in t^2
-            series = series * t2 + c
+        if ts.size <= 8:  # a few values: the same Horner sums on Python floats, much faster
+            series = np.array([_horner(x) for x in t2.tolist()])
+        else:
+            series = np.zeros_like(ts)
+            for c in _F1_COEF[::-1]:  # Horner in t^2
+                series = series * t2 + c
         out[small] = series * ts**3
     return out[0] if scalar else out
 
@@ -112,7 +126,7 @@ def _check_t_lam(t, lam):
     t = as_float_array(t, "t", allow_empty=True)
     lam = check_lambda(lam)
     lo, hi = T_RANGE
-    if np.any((t < lo) | (t > hi)):
+    if ((t < lo) | (t > hi)).any():
         raise ValueError(f"t = sqrt(m^2 - 1) must lie in [{lo:g}, {hi:g}], got {t!r}")
     return t, lam
 
@@ -123,7 +137,7 @@ def _check_radius(A, t, lam):
     The bound has a 1e-9 tolerance, so md_t_of_radius(A_MAX) (good to ~1e-11 there) passes.
     """
     over = np.ravel(A > A_MAX * (1.0 + 1e-9))
-    if np.any(over):
+    if over.any():
         i = np.flatnonzero(over)[0]
         t_i, lam_i = (float(np.broadcast_to(x, np.shape(A)).ravel()[i]) for x in (t, lam))
         t_min = float(_t_of_radius(np.array(A_MAX), lam_i))
@@ -373,18 +387,19 @@ def _t_of_radius(A, lam):
     q2, q1 = 0.5 * np.pi * c2, (0.5 * np.pi - 1.0) * c1
     large = 2.0 / (q1 + np.sqrt(q1 * q1 + 4.0 * q2))
     s = np.log10(np.where(small < 1.0, small, large))
-    for _ in range(200):
-        t = 10.0**s
-        f1, f2, _, df1, df2, _ = _brackets(t)
-        g = c2 * f1 + c1 * f2 - 1.0
-        a, b = np.where(g < 0, s, a), np.where(g > 0, s, b)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            s_new = s - g / ((c2 * df1 + c1 * df2) * t * np.log(10.0))
-        bad = ~np.isfinite(s_new) | (s_new < a) | (s_new > b)
-        s_new = np.where(bad, 0.5 * (a + b), s_new)
-        if np.all(np.abs(s_new - s) <= 1e-13 * np.maximum(1.0, np.abs(s))):
-            return 10.0**s_new
-        s = s_new
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for _ in range(200):
+            t = 10.0**s
+            f1, f2, _, df1, df2, _ = _brackets(t)
+            G = c2 * f1 + c1 * f2  # Eq (11)'s left side, = 1 at the root
+            a, b = np.where(G < 1.0, s, a), np.where(G > 1.0, s, b)
+            # Newton on log G, nearly linear in s where G is a power of t (t << 1, t >> 1).
+            s_new = s - np.log(G) * G / ((c2 * df1 + c1 * df2) * t * np.log(10.0))
+            bad = ~np.isfinite(s_new) | (s_new < a) | (s_new > b)
+            s_new = np.where(bad, 0.5 * (a + b), s_new)
+            if (np.abs(s_new - s) <= 1e-13 * np.maximum(1.0, np.abs(s))).all():
+                return 10.0**s_new
+            s = s_new
     return 10.0**s  # pragma: no cover - bisection converges well within 200 steps
 
 

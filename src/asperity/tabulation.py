@@ -44,7 +44,7 @@ def check_separation(d, name="d", d_max=D_MAX):
         If ``d`` is not real and finite or lies outside the range, naming ``name``.
     """
     d = as_float_array(d, name)
-    if np.any((d < D_MIN) | (d > d_max)):
+    if ((d < D_MIN) | (d > d_max)).any():
         raise ValueError(f"{name} (separation d/sigma) must lie in [{D_MIN:g}, {d_max:.6g}], "
                          f"got values from {d.min():g} to {d.max():g}")
     return d
