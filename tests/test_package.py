@@ -17,6 +17,7 @@ def test_public_names_are_the_defining_modules_objects():
     import asperity.heights
     import asperity.maugis_dugdale
     import asperity.multi_asperity
+    import asperity.sweeps
 
     for name in asperity.__all__:
         value = getattr(asperity, name)
@@ -24,7 +25,7 @@ def test_public_names_are_the_defining_modules_objects():
             assert value == asperity._version.__version__
             continue
         homes = [m for m in (asperity.curves, asperity.friction_stress, asperity.heights,
-                             asperity.maugis_dugdale, asperity.multi_asperity) if hasattr(m, name)]
+                             asperity.maugis_dugdale, asperity.multi_asperity, asperity.sweeps) if hasattr(m, name)]
         assert homes and getattr(homes[0], name) is value, name
 
 

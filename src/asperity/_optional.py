@@ -32,6 +32,7 @@ EXTRAS = {
     "distributed": "sweep",
     "zarr": "sweep",
     "h5netcdf": "sweep",
+    "netCDF4": "sweep",
     "tqdm": "sweep",
     "bokeh": "explore",
     "ContactMechanics": "bem",

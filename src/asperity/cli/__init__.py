@@ -2,8 +2,9 @@
 
 ``asperity reproduce`` recomputes the paper's figures and Table 1; ``separation``,
 ``load``, ``pulloff`` and ``md`` compute curves for one's own parameters; ``surface``
-reads a measured surface and ``materials`` lists the materials table.  Every error
-prints one line and exits with status 2.
+reads a measured surface and ``materials`` lists the materials table; ``sweep`` runs
+grids of parameter sets (NetCDF/Zarr, on Dask) and ``plot`` draws them as heat maps.
+Every error prints one line and exits with status 2.
 
 One module per command (:data:`COMMANDS`), each with ``NAME``, ``HELP``,
 ``DESCRIPTION`` (and optionally ``EPILOG``), ``add_arguments(parser)`` and ``run(args)``;
@@ -20,13 +21,14 @@ import sys
 
 from .._optional import MissingDependency
 from .._version import __version__
-from . import load, materials, md, pulloff, reproduce, separation, surface
+from . import load, materials, md, plot, pulloff, reproduce, separation, surface, sweep
 from ._args import UNITS, UsageError, join_negative_lists, parse_list
 
 __all__ = ["main", "build_parser", "parse_list", "UsageError", "COMMANDS"]
 
 #: Command name -> its module, in the order ``asperity --help`` lists them.
-COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, surface, materials, md)}
+COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, surface, materials, md,
+                                                  sweep, plot)}
 
 
 class _Parser(argparse.ArgumentParser):
