@@ -104,6 +104,9 @@ def test_startup_imports_no_numerics(code):
     (["reproduce", "--out", "{tmp}/paper"], "matplotlib", "plot"),
     (["load", *AU, "--load", "1mN"], "pint", "units"),
     (["surface", "{tmp}/scan.x3p"], "SurfaceTopography", "topography"),
+    (["sweep", *MODEL, "--P", "1", "--out", "{tmp}/m.nc"], "xarray", "sweep"),
+    (["sweep", *MODEL, "--P", "1", "--out", "{tmp}/m.nc", "--scheduler", "serial"], "netCDF4", "sweep"),
+    (["plot", "{tmp}", "--x", "alpha", "--y", "gamma", "--z", "mu"], "xarray", "sweep"),
 ])
 def test_missing_optional_dependency_is_one_line(capsys, monkeypatch, tmp_path, argv, module, extra):
     monkeypatch.setitem(sys.modules, module, None)  # makes "import module" fail

@@ -27,7 +27,7 @@ import sys
 from .._optional import require
 from .compute import compute_chunk
 from .spec import CHUNK_SETS, make_spec
-from .store import open_store
+from .store import open_result, open_store
 
 __all__ = ["sweep"]
 
@@ -201,9 +201,7 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
     spec = make_spec(parameters, points=points, P=P, d=d, chunk_sets=chunk_sets)
     store = open_store(spec, out, resume=resume)
     if store is None:  # a finished sweep of the same arguments
-        xr = require("xarray", purpose="sweeps")
-        return xr.open_zarr(out, consolidated=False) if str(out).rstrip("/").endswith(".zarr") \
-            else xr.open_dataset(out)
+        return open_result(out)
     try:
         todo = store.missing()
         bar = _progress(sum(_sets(spec, k) for k in todo), progress)

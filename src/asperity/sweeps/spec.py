@@ -194,7 +194,8 @@ def _axis_values(kind, P, d):
 def _parameter(name, value, kind):
     """A parameter as a Python scalar (constant) or a 1-D array (a dimension)."""
     if name == "material":
-        names = [value] if isinstance(value, str) else list(value)
+        names = [value] if isinstance(value, str) else list(value) if isinstance(value, list | tuple | np.ndarray) \
+            else None
         if not names or not all(isinstance(v, str) for v in names):
             raise ValueError(f"material must be a material name or a list of names, got {value!r}")
         return names[0] if isinstance(value, str) else np.array(names, dtype=object)

@@ -25,7 +25,7 @@ from .._optional import require
 from .._version import __version__
 from .spec import SweepSpec
 
-__all__ = ["open_store", "MemoryStore", "NetCDFStore", "ZarrStore", "MESSAGE_CHARS"]
+__all__ = ["open_store", "open_result", "MemoryStore", "NetCDFStore", "ZarrStore", "MESSAGE_CHARS"]
 
 #: Longest message kept per set (Zarr stores fixed-width strings).
 MESSAGE_CHARS = 400
@@ -136,11 +136,14 @@ class NetCDFStore(MemoryStore):
                 var = ds.createVariable(k, str if v.dtype == object else v.dtype, dims)
                 var[:] = v
                 var.setncatts(_axis_attrs(spec, k))
+            # CF: the parameters of a list of points are auxiliary coordinates of every variable.
+            aux = " ".join(k for k, (dims, _) in _coordinates(spec).items() if dims != (k,))
+            extra = {"coordinates": aux} if aux else {}
             for k, (meaning, unit, where) in spec.variables().items():
                 var = ds.createVariable(k, "f8", _var_dims(spec, where), fill_value=np.nan)
-                var.setncatts({"long_name": meaning, "units": unit})
+                var.setncatts({"long_name": meaning, "units": unit, **extra})
             var = ds.createVariable("message", str, spec.dims)
-            var.long_name = "why the set was not computed ('' if it was)"
+            var.setncatts({"long_name": "why the set was not computed ('' if it was)", **extra})
             done = ds.createVariable("chunk_done", "i1", ("chunk",), fill_value=False)
             done[:] = 0
             done.long_name = "1 where the chunk of parameter sets is written (for resuming)"
@@ -166,10 +169,9 @@ class NetCDFStore(MemoryStore):
             self.ds.close()
 
     def finish(self):
-        xr = require("xarray", purpose=_PURPOSE)
         self.close()
         os.replace(self.partial, self.path)
-        return xr.open_dataset(self.path)
+        return open_result(self.path)
 
 
 class ZarrStore(MemoryStore):
@@ -229,7 +231,16 @@ class ZarrStore(MemoryStore):
         if os.path.exists(self.path):
             shutil.rmtree(self.path)
         os.replace(self.partial, self.path)
-        return self.xr.open_zarr(self.path, consolidated=False)
+        return open_result(self.path)
+
+
+def open_result(path) -> object:
+    """A finished sweep's Dataset, read lazily from ``path`` (NetCDF or ``.zarr``), without the
+    ``chunk_done`` bookkeeping of resuming."""
+    xr = require("xarray", purpose=_PURPOSE)
+    path = os.fspath(path)
+    ds = xr.open_zarr(path, consolidated=False) if path.rstrip("/").endswith(".zarr") else xr.open_dataset(path)
+    return ds.drop_vars("chunk_done", errors="ignore")
 
 
 def _stored_fingerprint(path: str, zarr: bool) -> str | None:
