@@ -37,7 +37,7 @@ def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray
     dicts and ragged lists raise :class:`ValueError` naming ``name``.
     """
     # Fast paths for what the library passes itself (a float, a float64 array): a copy, as below.
-    if type(value) is float:
+    if type(value) is float or type(value) is np.float64:
         if value - value == 0.0:  # finite
             return np.array(value)
     elif type(value) is np.ndarray and value.dtype == np.float64 and (value.size or allow_empty):

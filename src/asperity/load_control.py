@@ -326,8 +326,10 @@ def _check_grid(grid, Pg, dPg):
 
 def _branch_guess(P, grid, Pg, dPg):
     n = grid.size
-    below = Pg[None, :] <= P[:, None]
-    j = np.clip(np.argmax(below, axis=1), 1, n - 1)
+    if (np.diff(Pg) < 0).all():  # strictly falling: the first point at or below P, by bisection
+        j = np.clip(np.searchsorted(-Pg, -P, side="left"), 1, n - 1)
+    else:
+        j = np.clip(np.argmax(Pg[None, :] <= P[:, None], axis=1), 1, n - 1)
     a, b = grid[j - 1].copy(), grid[j].copy()
     nonzero = np.abs(P[P != 0])
     s = max(1e-3 * (nonzero.min() if nonzero.size else np.abs(Pg).max()), 1e-300)

@@ -291,17 +291,36 @@ def _penetration_table(lam: float, s_lo: float, s_hi: float):
     return grid, y, dD * t * np.log(10.0) * dy
 
 
-def _first_failing(lam, s, keep):
-    """The first of the points ``s`` (log10 t) where ``keep(Delta)`` fails, or None: one call to the curve."""
-    k = np.flatnonzero(~keep(_md_curve(10.0**s, lam)[2]))
-    return float(s[k[0]]) if k.size else None
+def _table_range(lam, end, lo, hi):
+    """Ends (s_lo, s_hi) of s = log10 t for the table, with Delta(s_lo) >= hi and (branch to
+    t = inf) Delta(s_hi) <= lo: the first of the points s_hi = 2, 4, ... and s_lo = min(s_hi - 1, 0),
+    s_lo - 2, ... that do, tried in one call to the curve (loops go on in the rare cases beyond)."""
+    # Where the branch ends at t = inf, s_hi >= 2 and so s_lo starts at 0.
+    s_hi = np.inf if np.isinf(end.t) else float(np.log10(end.t))
+    lows = min(s_hi - 1.0, 0.0) - np.arange(0.0, 9.0, 2.0)
+    highs = np.arange(2.0, 21.0, 2.0) if np.isinf(end.t) else np.array([])
+    D = _md_curve(10.0**np.concatenate([lows, highs]), lam)[2]
+    D_lo, D_hi = D[:lows.size], D[lows.size:]
+    if np.isinf(end.t):
+        k = np.flatnonzero(D_hi <= lo)
+        s_hi = float(highs[k[0]]) if k.size else 22.0
+        while not k.size and _md_curve(10.0**s_hi, lam)[2] > lo and s_hi < 300:
+            s_hi += 2.0
+    k = np.flatnonzero(D_lo >= hi)
+    if k.size:
+        return float(lows[k[0]]), s_hi
+    s_lo = float(lows[-1]) - 2.0
+    while _md_curve(10.0**s_lo, lam)[2] < hi:
+        s_lo -= 2.0
+    return s_lo, s_hi
 
 
 def _invert_penetration(delta, lam, end):
     """(t, A, P) on the stable branch with Delta(t) = delta (delta >= end.delta), vectorized.
 
-    A cubic-Hermite inverse of a table of Delta(log10 t) (cached per lambda and range) gives
-    each start; safeguarded Newton in log10 t finishes, usually in one or two steps.
+    A cubic-Hermite inverse of a table of y(Delta) (:func:`_inverse_variable`, cached per
+    lambda and range) gives each start; safeguarded Newton on y in log10 t finishes, usually
+    in one or two steps, also next to the branch end where Delta(t) is flat but y is not.
     """
     flat = delta.ravel()
     t_out, A_out, P_out = (np.full_like(flat, x) for x in (end.t, end.A, end.P))
@@ -309,23 +328,7 @@ def _invert_penetration(delta, lam, end):
     if todo.size == 0:
         return (x.reshape(delta.shape) for x in (t_out, A_out, P_out))
     target = flat[todo]
-    lo, hi = target.min(), target.max()
-    # Bracket in s = log10 t: Delta(s) is decreasing on the stable branch.  The first candidates
-    # are tried in one call each; the loops go on from there in the rare cases they do not suffice.
-    s_hi = np.log10(end.t) if np.isfinite(end.t) else 2.0
-    if np.isinf(end.t):
-        s_hi = _first_failing(lam, np.arange(2.0, 21.0, 2.0), lambda D: D > lo)
-        if s_hi is None:
-            s_hi = 22.0
-            while _md_curve(10.0**s_hi, lam)[2] > lo and s_hi < 300:
-                s_hi += 2.0
-    s_lo = min(s_hi - 1.0, 0.0)
-    first = _first_failing(lam, s_lo - np.arange(0.0, 9.0, 2.0), lambda D: D < hi)
-    if first is None:
-        first = s_lo - 10.0
-        while _md_curve(10.0**first, lam)[2] < hi:
-            first -= 2.0
-    s_lo = first
+    s_lo, s_hi = _table_range(lam, end, target.min(), target.max())
     grid, ygrid, slope = _penetration_table(lam, float(s_lo), float(s_hi))
     # Table look-up for a bracket [a, b] and a cubic-Hermite start for s(y).
     y = _inverse_variable(target, end)[0]
@@ -348,9 +351,10 @@ def _invert_penetration(delta, lam, end):
         # Keep the bracket: Delta decreases with s.
         a[active] = np.where(resid > 0, sa, a[active])
         b[active] = np.where(resid < 0, sa, b[active])
-        slope = dD * t * np.log(10.0)
+        yD, dy = _inverse_variable(D, end)
+        slope = dD * t * np.log(10.0) * dy  # dy/ds
         with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(slope < 0, -resid / slope, np.nan)
+            step = np.where(slope < 0, -(yD - y[active]) / slope, np.nan)
         s_new = sa + step
         bad = ~np.isfinite(s_new) | (s_new < a[active]) | (s_new > b[active])
         s_new = np.where(bad, 0.5 * (a[active] + b[active]), s_new)

@@ -1,0 +1,79 @@
+"""Throughput of asperity.sweep, serial and on a local Dask cluster (run: .venv/bin/python benchmarks/bench_sweep.py).
+
+Targets (issue #12): on 2 workers a scaling efficiency >= 80 % over one core, and 10^4
+parameter sets of 100 loads with adhesion in <= 15 s on the 2-core machine.  The grid is
+alpha x gamma (beta = 1000, loads 1e-2..1e5), the results streamed to a NetCDF file.
+Each figure is the best of ``--repeat`` runs; the workers are started and warmed up
+(imports, a first small sweep) before timing.  Other jobs on the machine slow it down:
+check ``uptime`` and compare figures measured in the same run.
+"""
+
+import os
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # one core per process, no BLAS thread noise
+
+import argparse  # noqa: E402
+import logging  # noqa: E402
+import math  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+import asperity  # noqa: E402
+
+LOADS = np.geomspace(1e-2, 1e5, 100)
+
+
+def grid(n_sets):
+    """alpha x gamma with about n_sets cells over the typical adhesive range."""
+    n = max(1, round(math.sqrt(n_sets)))
+    m = max(1, round(n_sets / n))
+    return dict(alpha=np.geomspace(1e-3, 0.1, n), beta=1000.0, gamma=np.geomspace(1e-5, 1e-2, m), P=LOADS)
+
+
+def timed(n_sets, scheduler, repeat):
+    best = math.inf
+    for _ in range(repeat):
+        with tempfile.TemporaryDirectory() as tmp:
+            t = time.perf_counter()
+            ds = asperity.sweep(**grid(n_sets), out=os.path.join(tmp, "map.nc"), scheduler=scheduler)
+            best = min(best, time.perf_counter() - t)
+            failed = int((ds.message.values != "").sum())
+            ds.close()
+    return best, failed
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--sets", type=int, default=1024, help="parameter sets for the throughput figures")
+    parser.add_argument("--big", type=int, default=10_000, help="parameter sets of the large run on 2 workers "
+                                                                 "(0: skip)")
+    parser.add_argument("--repeat", type=int, default=3, help="best of this many runs")
+    args = parser.parse_args()
+    from distributed import Client, LocalCluster
+
+    asperity.sweep(**grid(16), scheduler="serial")  # imports and caches warm
+    t1, failed = timed(args.sets, "serial", args.repeat)
+    n = grid(args.sets)
+    n_sets = n["alpha"].size * n["gamma"].size
+    print(f"grid: {n_sets} sets (alpha x gamma), {LOADS.size} loads each, adhesion; {failed} outside the domain")
+    print(f"  serial       {t1:7.2f} s   {n_sets / t1:8.0f} sets/s   {t1 / n_sets * 1e3:6.2f} ms/set")
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address=None, silence_logs=logging.ERROR) as cluster, Client(cluster) as client:
+        client.run(lambda: __import__("asperity.sweeps.compute"))
+        asperity.sweep(**grid(64), scheduler=client, chunk_sets=8)  # workers warm
+        t2, _ = timed(args.sets, client, args.repeat)
+        eff = t1 / t2 / 2
+        print(f"  2 workers    {t2:7.2f} s   {n_sets / t2:8.0f} sets/s   scaling efficiency {eff * 100:5.1f} %"
+              "   (target >= 80 %)")
+        if args.big:
+            tb, failed = timed(args.big, client, 1)
+            nb = grid(args.big)
+            nb = nb["alpha"].size * nb["gamma"].size
+            print(f"  {nb} sets of {LOADS.size} loads on 2 workers: {tb:6.2f} s   ({failed} outside the domain; "
+                  "target <= 15 s)")
+
+
+if __name__ == "__main__":
+    main()
