@@ -15,7 +15,7 @@ import asperity
 DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
-                   "asperity.heights"]
+                   "asperity.heights", "asperity.sweeps.run"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -29,6 +29,7 @@ FULL_DOCS = {
     "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
                               "invert_branch"],
     "asperity.pull_off_search": ["find_pull_off"],
+    "asperity.sweeps.run": ["sweep"],
 }
 
 

@@ -97,3 +97,29 @@ def test_resume_and_refusal(capsys, tmp_path):
 def test_errors_are_one_line(capsys, tmp_path, argv, needle):
     code, _, err = run(capsys, "sweep", *argv, "--out", str(tmp_path / "x.nc"), "--scheduler", "serial")
     assert one_line_error(code, err, needle), err
+
+
+def test_scheduler_address_equals_the_api(capsys, tmp_path):
+    distributed = pytest.importorskip("distributed")
+    import logging
+
+    out = tmp_path / "map.nc"
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None, silence_logs=logging.CRITICAL) as cluster:
+        code, _, err = run(capsys, "sweep", "--alpha", "0.003,0.01", "--beta", "1000", "--gamma", "1e-3",
+                           "--P", "1,10", "--out", str(out), "--scheduler", cluster.scheduler_address,
+                           "--chunk-sets", "1")
+    assert code == 0, err
+    same(out, asperity.sweep(alpha=np.array([0.003, 0.01]), beta=1000.0, gamma=1e-3, P=np.array([1.0, 10.0]),
+                             scheduler="serial", chunk_sets=1))
+
+
+def test_unreachable_scheduler_is_one_line_and_writes_nothing(capsys, tmp_path, monkeypatch):
+    pytest.importorskip("distributed")
+    from asperity.sweeps import run as sweep_run
+
+    monkeypatch.setattr(sweep_run, "CONNECT_TIMEOUT", 1)
+    code, _, err = run(capsys, "sweep", "--alpha", "0.01", "--beta", "1000", "--P", "1", "--out",
+                       str(tmp_path / "m.nc"), "--scheduler", "tcp://127.0.0.1:9")
+    assert one_line_error(code, err, "cannot reach the Dask scheduler")
+    assert list(tmp_path.iterdir()) == []

@@ -29,7 +29,10 @@ from .compute import compute_chunk
 from .spec import CHUNK_SETS, make_spec
 from .store import open_result, open_store
 
-__all__ = ["sweep"]
+__all__ = ["sweep", "CONNECT_TIMEOUT"]
+
+#: Seconds to wait for a scheduler given by its address.
+CONNECT_TIMEOUT = 20
 
 
 def _serial(spec, todo, done):
@@ -95,7 +98,10 @@ def _client(scheduler):
         return client, close
     if isinstance(scheduler, str):
         distributed = require("distributed", purpose="sweeps on Dask")
-        client = distributed.Client(scheduler)
+        try:
+            client = distributed.Client(scheduler, timeout=CONNECT_TIMEOUT)
+        except (OSError, TimeoutError, ValueError, TypeError) as err:
+            raise ValueError(f"cannot reach the Dask scheduler at {scheduler!r}: {err}") from None
         return client, client.close
     if hasattr(scheduler, "submit") and hasattr(scheduler, "nthreads"):
         return scheduler, None  # the caller's client: the caller closes it
@@ -182,10 +188,11 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
 
     Examples
     --------
-    >>> ds = sweep(alpha=[0.003, 0.01], beta=1000.0, gamma=1e-3, P=[1.0, 10.0],
-    ...            scheduler="serial")  # doctest: +SKIP
-    >>> ds.mu.dims  # doctest: +SKIP
+    >>> ds = sweep(alpha=[0.003, 0.01], beta=1000.0, gamma=1e-3, P=[1.0, 10.0], scheduler="serial")
+    >>> ds.mu.dims
     ('alpha', 'P')
+    >>> round(float(ds.pull_off.sel(alpha=0.003)), 1)  # Table 1 prints 320.1
+    320.1
 
     References
     ----------
@@ -199,19 +206,24 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
     parameters = dict(alpha=alpha, beta=beta, gamma=gamma, nu=nu, h_over_b=h_over_b, tau_f1=tau_f1,
                       tau_f2=tau_f2, a1=a1, a2=a2, material=material, sigma_s=sigma_s, R=R, eta=eta, area=area)
     spec = make_spec(parameters, points=points, P=P, d=d, chunk_sets=chunk_sets)
+    if not (scheduler is None or isinstance(scheduler, str) or hasattr(scheduler, "submit")):
+        raise ValueError(f"scheduler must be None, 'serial', 'local', a scheduler address or a distributed.Client, "
+                         f"got {scheduler!r}")
     store = open_store(spec, out, resume=resume)
     if store is None:  # a finished sweep of the same arguments
         return open_result(out)
     try:
         todo = store.missing()
-        bar = _progress(sum(_sets(spec, k) for k in todo), progress)
-
-        def done(k, result):
-            store.write(k, result)
-            if bar is not None:
-                bar.update(_sets(spec, k))
-        client, close = _client(scheduler) if todo else (None, None)
+        client, close = _client(scheduler) if todo else (None, None)  # before any file is made
+        bar = None
         try:
+            store.start()
+            bar = _progress(sum(_sets(spec, k) for k in todo), progress)
+
+            def done(k, result):
+                store.write(k, result)
+                if bar is not None:
+                    bar.update(_sets(spec, k))
             if client is None:
                 _serial(spec, todo, done)
             else:

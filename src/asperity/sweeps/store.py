@@ -1,9 +1,10 @@
 """Where a sweep's results go: NetCDF, Zarr or memory, chunk by chunk, resumable.
 
 A store is created from the :class:`~asperity.sweeps.spec.SweepSpec` before any chunk is
-computed: every variable with its dimensions, units and meaning (attributes), the
-coordinates, the constant parameters, the asperity version and the sweep's fingerprint
-as global attributes, and a ``chunk_done`` flag per chunk.  Each finished chunk is
+computed (once the workers are reachable: ``start()``): every variable with its
+dimensions, units and meaning (attributes), the coordinates, the constant parameters,
+the asperity version and the sweep's fingerprint as global attributes, and a
+``chunk_done`` flag per chunk.  Each finished chunk is
 written into its region and then flagged, so memory stays bounded by the chunks in
 flight whatever the grid's size.
 
@@ -90,6 +91,9 @@ class MemoryStore:
         self.data["message"] = np.full(shape, "", dtype=object)
         self.done = np.zeros(spec.n_chunks, dtype=bool)
 
+    def start(self) -> None:
+        """Create the store's file (new stores; called once the workers are reachable)."""
+
     def missing(self) -> list[int]:
         return [int(k) for k in np.flatnonzero(~self.done)]
 
@@ -119,11 +123,15 @@ class NetCDFStore(MemoryStore):
     """A NetCDF-4 file written chunk by chunk through netCDF4 (``OUT.partial`` until done)."""
 
     def __init__(self, spec: SweepSpec, path: str, *, create: bool):
-        nc = require("netCDF4", purpose=_PURPOSE)
-        self.spec, self.path, self.partial = spec, path, path + ".partial"
-        if create:
-            self._create(nc)
-        self.ds = nc.Dataset(self.partial, "a")
+        self.nc = require("netCDF4", purpose=_PURPOSE)
+        self.spec, self.path, self.partial, self.new = spec, path, path + ".partial", create
+        self.ds = None if create else self.nc.Dataset(self.partial, "a")
+
+    def start(self) -> None:
+        if self.new:
+            self._create(self.nc)
+            self.ds = self.nc.Dataset(self.partial, "a")
+            self.new = False
 
     def _create(self, nc):
         spec = self.spec
@@ -150,6 +158,8 @@ class NetCDFStore(MemoryStore):
             ds.setncatts(_attrs(spec))
 
     def missing(self) -> list[int]:
+        if self.new:
+            return list(range(self.spec.n_chunks))
         return [int(k) for k in np.flatnonzero(np.asarray(self.ds["chunk_done"][:]) == 0)]
 
     def write(self, k: int, result: dict) -> None:
@@ -165,7 +175,7 @@ class NetCDFStore(MemoryStore):
         self.ds.sync()
 
     def close(self):
-        if self.ds.isopen():
+        if self.ds is not None and self.ds.isopen():
             self.ds.close()
 
     def finish(self):
@@ -180,9 +190,12 @@ class ZarrStore(MemoryStore):
     def __init__(self, spec: SweepSpec, path: str, *, create: bool):
         self.xr = require("xarray", purpose=_PURPOSE)
         require("zarr", purpose=_PURPOSE)
-        self.spec, self.path, self.partial = spec, path, path + ".partial"
-        if create:
+        self.spec, self.path, self.partial, self.new = spec, path, path + ".partial", create
+
+    def start(self) -> None:
+        if self.new:
             self._create()
+            self.new = False
 
     def _chunks(self, where):
         j, step, _ = self.spec._split()
@@ -210,6 +223,8 @@ class ZarrStore(MemoryStore):
         ds.to_zarr(self.partial, mode="w", compute=False, zarr_format=2, consolidated=False, encoding=encoding)
 
     def missing(self) -> list[int]:
+        if self.new:
+            return list(range(self.spec.n_chunks))
         done = self.xr.open_zarr(self.partial, consolidated=False)["chunk_done"].values
         return [int(k) for k in np.flatnonzero(done == 0)]
 
