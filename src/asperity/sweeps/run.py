@@ -46,7 +46,9 @@ def _on_dask(client, spec, todo, done, retries):
     variables = spec.variables()
     nthreads = max(1, sum(client.nthreads().values()))
     window = 2 * nthreads + 1  # in flight at once: keeps every worker busy, memory bounded
-    values = client.scatter(spec.values, broadcast=True)
+    # The loads travel with each task (their size is small beside the task's results): no
+    # scattered data that a lost worker would take with it.
+    values = spec.values
     tag = spec.fingerprint()[:10]
     pending = iter(todo)
 
