@@ -38,6 +38,9 @@ References
 
 from __future__ import annotations
 
+import math
+from types import SimpleNamespace
+
 import numpy as np
 
 from ._validation import as_float_array, check_positive
@@ -106,12 +109,22 @@ def _f1(t):
     return out[0] if scalar else out
 
 
-def _brackets(t):
-    """The three brackets of Eqs (11)-(12) and their t-derivatives."""
-    t = np.asarray(t, dtype=float)
-    at = np.arctan(t)
-    m = np.sqrt(1.0 + t * t)
-    f1 = _f1(t)
+#: math in NumPy's names, so :func:`_brackets` also runs on one Python float (much faster there).
+_MATH = SimpleNamespace(arctan=math.atan, sqrt=math.sqrt)
+
+
+def _f1_float(t: float) -> float:
+    """:func:`_f1` of one Python float."""
+    return _series(t * t) * t**3 if t < _SERIES_T else t + (t * t - 1.0) * math.atan(t)
+
+
+def _brackets(t, xp=np):
+    """The three brackets of Eqs (11)-(12) and their t-derivatives (``xp=_MATH``: t a Python float)."""
+    if xp is np:
+        t = np.asarray(t, dtype=float)
+    at = xp.arctan(t)
+    m = xp.sqrt(1.0 + t * t)
+    f1 = _f1(t) if xp is np else _f1_float(t)
     f2 = t * at - t * t / (1.0 + m)  # t atan t - m + 1, with m - 1 = t^2/(1 + m)
     g = t + m * m * at  # bracket of Eq (12)
     df1 = 2.0 * t * (at + t / (m * m))
@@ -376,8 +389,7 @@ def md_t_of_radius(A, lam):
     A = as_float_array(A, "A", allow_empty=True)
     lam = check_lambda(lam)
     A, lam = np.broadcast_arrays(A, lam)
-    f1, f2, *_ = _brackets(np.full(A.shape, T_RANGE[1]))
-    A_min = _radius_from_brackets(lam, f1, f2)[0]
+    A_min = _radius_from_brackets(lam, *_brackets(T_RANGE[1], _MATH)[:2])[0]
     bad = (A < A_min) | (A > A_MAX)
     if np.any(bad):
         i = np.flatnonzero(bad.ravel())[0]
@@ -390,6 +402,10 @@ def md_t_of_radius(A, lam):
 def _t_of_radius(A, lam):
     """t with md_radius(t, lam) = A, vectorized: Eq (11) at fixed A is increasing in t."""
     A = np.asarray(A, dtype=float)
+    if A.size <= 4:  # a few radii (the friction breakpoints): the same Newton on Python floats
+        lam_b = np.broadcast_to(lam, A.shape)
+        return np.array([_t_of_radius_float(x, y) for x, y in zip(A.ravel().tolist(), lam_b.ravel().tolist(),
+                                                                   strict=True)]).reshape(A.shape)
     c2, c1 = 0.5 * lam * A * A, (4.0 / 3.0) * lam * lam * A
     a = np.full_like(A, np.log10(T_RANGE[0]))
     b = np.full_like(A, np.log10(T_RANGE[1]))
@@ -412,6 +428,32 @@ def _t_of_radius(A, lam):
             if (np.abs(s_new - s) <= 1e-13 * np.maximum(1.0, np.abs(s))).all():
                 return 10.0**s_new
             s = s_new
+    return 10.0**s  # pragma: no cover - bisection converges well within 200 steps
+
+
+def _t_of_radius_float(A: float, lam: float) -> float:
+    """:func:`_t_of_radius` of one radius, on Python floats (the same iteration, one element)."""
+    c2, c1 = 0.5 * lam * A * A, (4.0 / 3.0) * lam * lam * A
+    a, b = math.log10(T_RANGE[0]), math.log10(T_RANGE[1])
+    small = min((0.75 / c2) ** (1.0 / 3.0), math.sqrt(2.0 / c1))
+    q2, q1 = 0.5 * math.pi * c2, (0.5 * math.pi - 1.0) * c1
+    large = 2.0 / (q1 + math.sqrt(q1 * q1 + 4.0 * q2))
+    s = math.log10(small if small < 1.0 else large)
+    for _ in range(200):
+        t = 10.0**s
+        f1, f2, _, df1, df2, _ = _brackets(t, _MATH)
+        G = c2 * f1 + c1 * f2
+        if G < 1.0:
+            a = s
+        elif G > 1.0:
+            b = s
+        slope = (c2 * df1 + c1 * df2) * t * math.log(10.0)
+        s_new = s - math.log(G) * G / slope if G > 0.0 and slope > 0.0 else math.nan
+        if not (math.isfinite(s_new) and a <= s_new <= b):
+            s_new = 0.5 * (a + b)
+        if abs(s_new - s) <= 1e-13 * max(1.0, abs(s)):
+            return 10.0**s_new
+        s = s_new
     return 10.0**s  # pragma: no cover - bisection converges well within 200 steps
 
 
