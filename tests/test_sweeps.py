@@ -246,7 +246,7 @@ def cluster():
     import logging
 
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                  dashboard_address=None, silence_logs=logging.CRITICAL) as cl, \
+                                  dashboard_address=":0", silence_logs=logging.CRITICAL) as cl, \
             distributed.Client(cl) as client:
         yield client
 

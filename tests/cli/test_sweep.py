@@ -105,7 +105,7 @@ def test_scheduler_address_equals_the_api(capsys, tmp_path):
 
     out = tmp_path / "map.nc"
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                  dashboard_address=None, silence_logs=logging.CRITICAL) as cluster:
+                                  dashboard_address=":0", silence_logs=logging.CRITICAL) as cluster:
         code, _, err = run(capsys, "sweep", "--alpha", "0.003,0.01", "--beta", "1000", "--gamma", "1e-3",
                            "--P", "1,10", "--out", str(out), "--scheduler", cluster.scheduler_address,
                            "--chunk-sets", "1")

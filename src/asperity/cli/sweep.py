@@ -59,7 +59,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                    help="Dask scheduler address of an existing cluster, or 'local' (one worker per core; the "
                         "default when Dask is installed) or 'serial'")
     s.add_argument("--chunk-sets", dest="chunk_sets", metavar="N", type=int, default=None,
-                   help="parameter sets per task (default 256)")
+                   help="parameter sets per task (default: a 32nd of the sets, within 32..256)")
     s.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                    help="progress bar with ETA on standard error (default: when it is a terminal)")
 

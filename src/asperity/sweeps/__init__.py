@@ -22,7 +22,7 @@ References
 
 from .compute import compute_chunk, compute_set
 from .run import sweep
-from .spec import CHUNK_SETS, MODEL_NAMES, PHYSICAL_NAMES, SweepSpec, make_spec, read_points
+from .spec import CHUNK_SETS, MODEL_NAMES, PHYSICAL_NAMES, SweepSpec, default_chunk_sets, make_spec, read_points
 
 __all__ = ["sweep", "SweepSpec", "make_spec", "read_points", "compute_chunk", "compute_set", "CHUNK_SETS",
-           "MODEL_NAMES", "PHYSICAL_NAMES"]
+           "MODEL_NAMES", "PHYSICAL_NAMES", "default_chunk_sets"]

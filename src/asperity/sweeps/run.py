@@ -10,11 +10,12 @@ and hands the missing chunks to an executor:
 * an address (``"tcp://10.0.0.1:8786"``) or a :class:`distributed.Client`: an existing
   cluster (dask-jobqueue on a batch system, a Kubernetes Dask cluster, ...).
 
-Tasks are chunks of parameter sets (:data:`~asperity.sweeps.spec.CHUNK_SETS`, about a
-second of work each, so the scheduler's overhead of a few milliseconds per task is
-small).  At most a few tasks per worker thread are in flight: each result is written to
-the store by this process as it arrives and then dropped, so memory is bounded whatever
-the grid's size.  Dask retries a task whose worker dies (``retries`` more for a task
+Tasks are chunks of parameter sets (:func:`~asperity.sweeps.spec.default_chunk_sets`: up
+to 256, about half a second of work, so the scheduler's overhead of a few milliseconds
+per task is small; at least 32 chunks for smaller grids, to keep every worker busy).
+At most a few tasks per worker thread are in flight: each result is written to the
+store by this process as it arrives and then dropped, so memory is bounded whatever the
+grid's size.  Dask retries a task whose worker dies (``retries`` more for a task
 that raises), so a killed worker does not lose the sweep.
 """
 
@@ -26,7 +27,7 @@ import sys
 
 from .._optional import require
 from .compute import compute_chunk
-from .spec import CHUNK_SETS, make_spec
+from .spec import make_spec
 from .store import open_result, open_store
 
 __all__ = ["sweep", "CONNECT_TIMEOUT"]
@@ -77,7 +78,7 @@ def _local_cluster():
     distributed = require("distributed", purpose="sweeps on Dask")
     n = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                       dashboard_address=None, silence_logs=logging.ERROR)
+                                       dashboard_address=":0", silence_logs=logging.ERROR)
     return cluster, distributed.Client(cluster)
 
 
@@ -123,7 +124,7 @@ def _progress(total, enabled):
 
 def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=None, tau_f2=None, a1=None,
           a2=None, material=None, sigma_s=None, R=None, eta=None, area=None, points=None, P=None, d=None,
-          out=None, scheduler=None, resume=False, chunk_sets=CHUNK_SETS, retries=3, progress=False):
+          out=None, scheduler=None, resume=False, chunk_sets=None, retries=3, progress=False):
     r"""Curves and pull-off over a grid (or a list) of parameter sets, as an :class:`xarray.Dataset`.
 
     Every parameter given as a 1-D array is a dimension of the grid (their outer product,
@@ -163,8 +164,8 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
     resume : bool
         Complete the interrupted sweep at ``out`` (computing only its missing chunks), or
         reuse a finished one, if its arguments match.
-    chunk_sets : int
-        Parameter sets per task (default 256), >= 1.
+    chunk_sets : int, optional
+        Parameter sets per task, >= 1 (default: a 32nd of the sets, within 32..256).
     retries : int
         Extra tries of a task that raises on a worker (default 3).
     progress : bool

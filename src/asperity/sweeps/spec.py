@@ -34,14 +34,21 @@ from .._validation import as_float_array
 from .._version import __version__
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 
-__all__ = ["MODEL_NAMES", "PHYSICAL_NAMES", "SweepSpec", "make_spec", "read_points"]
+__all__ = ["MODEL_NAMES", "PHYSICAL_NAMES", "CHUNK_SETS", "SweepSpec", "default_chunk_sets", "make_spec", "read_points"]
 
 #: Parameters of a dimensionless sweep, in dimension order.
 MODEL_NAMES = ("alpha", "beta", "gamma", "nu", "h_over_b", "tau_f1", "tau_f2", "a1", "a2")
 #: Parameters of a physical sweep, in dimension order (material is a name).
 PHYSICAL_NAMES = ("material", "sigma_s", "R", "eta", "area")
-#: Sets per chunk aimed at: ~0.5-1 s of work per task keeps the scheduler's share small.
+#: Most sets per chunk: ~0.5 s of work per task keeps the scheduler's share (ms per task) small.
 CHUNK_SETS = 256
+
+
+def default_chunk_sets(n_sets: int) -> int:
+    """Sets per chunk by default: n_sets/32 within [32, CHUNK_SETS], so a small sweep still
+    makes enough tasks to keep every worker busy.  It depends on the grid only (a resumed
+    sweep must cut the same chunks, whatever the cluster)."""
+    return int(min(CHUNK_SETS, max(32, n_sets // 32)))
 
 
 def _model_defaults() -> dict:
@@ -67,7 +74,7 @@ class SweepSpec:
     values : ndarray
         The loads or separations of every set.
     chunk_sets : int
-        Sets per chunk aimed at.
+        Sets per chunk aimed at (:func:`default_chunk_sets` by default).
     """
 
     kind: str
@@ -209,7 +216,7 @@ def _parameter(name, value, kind):
     return float(arr) if arr.ndim == 0 else arr
 
 
-def make_spec(parameters: dict, *, points=None, P=None, d=None, chunk_sets=CHUNK_SETS) -> SweepSpec:
+def make_spec(parameters: dict, *, points=None, P=None, d=None, chunk_sets=None) -> SweepSpec:
     """A :class:`SweepSpec` from keyword parameters (scalars or 1-D arrays) or a list of points.
 
     Raises
@@ -258,6 +265,9 @@ def make_spec(parameters: dict, *, points=None, P=None, d=None, chunk_sets=CHUNK
     for n in coords:
         constants.pop(n, None)
     axis, arr = _axis_values(kind, P, d)
+    spec = SweepSpec(kind, dims, coords, constants, axis, arr)
+    if chunk_sets is None:
+        chunk_sets = default_chunk_sets(spec.n_sets)
     if isinstance(chunk_sets, bool) or not isinstance(chunk_sets, int | np.integer) or chunk_sets < 1:
         raise ValueError(f"chunk_sets must be an integer >= 1, got {chunk_sets!r}")
     return SweepSpec(kind, dims, coords, constants, axis, arr, int(chunk_sets))
