@@ -242,7 +242,8 @@ class AsperityLaw:
         if targets.size == 0:
             return ()
         t = md_t_of_radius(targets, self.lam)
-        return tuple(sorted(self.delta_hat * md_curve(t, self.lam)[2]))
+        # One or two radii: the curve point by point (its fast path for single floats).
+        return tuple(sorted(self.delta_hat * float(md_curve(float(x), self.lam)[2]) for x in t))
 
     def evaluate(self, u_bar):
         """Contact radius :math:`\\bar a` and force :math:`P/(Gb^2)` at penetrations ``u_bar``.

@@ -111,6 +111,7 @@ def _f1(t):
 
 #: math in NumPy's names, so :func:`_brackets` also runs on one Python float (much faster there).
 _MATH = SimpleNamespace(arctan=math.atan, sqrt=math.sqrt)
+_FLOATS = (float, np.float64)
 
 
 def _f1_float(t: float) -> float:
@@ -133,17 +134,19 @@ def _brackets(t, xp=np):
     return f1, f2, g, df1, df2, dg
 
 
-def _radius_from_brackets(lam, f1, f2):
+def _radius_from_brackets(lam, f1, f2, xp=np):
     # Eq (11) is a2 A^2 + a1 A - 1 = 0 with a1, a2 >= 0; the positive root without
     # cancellation is 2 / (a1 + sqrt(a1^2 + 4 a2)).
     a2 = 0.5 * lam * f1
     a1 = (4.0 / 3.0) * lam * lam * f2
-    return 2.0 / (a1 + np.sqrt(a1 * a1 + 4.0 * a2)), a1, a2
+    return 2.0 / (a1 + xp.sqrt(a1 * a1 + 4.0 * a2)), a1, a2
 
 
 #: Range of t = sqrt(m^2 - 1) handled: t^2 and the brackets stay finite up to 1e100; at the
 #: low end the radius bound :data:`A_MAX` binds first (from t ~ 1e-50).
 T_RANGE = (1e-100, 1e100)
+_T_LO, _T_HI = T_RANGE
+_LAM_LO, _LAM_HI = LAMBDA_RANGE
 
 
 def _check_t_lam(t, lam):
@@ -336,19 +339,26 @@ def md_curve(t, lam, derivatives=False):
     """
     if not isinstance(derivatives, bool | np.bool_):
         raise TypeError(f"derivatives must be True or False, got {derivatives!r}")
-    t, lam = _check_t_lam(t, lam)
-    f1, f2, g, df1, df2, dg = _brackets(t)
-    A, a1, a2 = _radius_from_brackets(lam, f1, f2)
+    xp = np
+    if type(t) in _FLOATS and type(lam) in _FLOATS and _T_LO <= t <= _T_HI and _LAM_LO <= lam <= _LAM_HI:
+        xp = _MATH  # one point (root finding along the curve): the same formulas on Python floats
+        t, lam = float(t), float(lam)
+    else:
+        t, lam = _check_t_lam(t, lam)
+    f1, f2, g, df1, df2, dg = _brackets(t, xp)
+    A, a1, a2 = _radius_from_brackets(lam, f1, f2, xp)
     _check_radius(A, t, lam)
     P = A**3 - lam * A * A * g
     D = A * A - (4.0 / 3.0) * lam * A * t
     if not derivatives:
-        return A, P, D
+        return (np.float64(A), np.float64(P), np.float64(D)) if xp is _MATH else (A, P, D)
     da2 = 0.5 * lam * df1
     da1 = (4.0 / 3.0) * lam * lam * df2
     dA = -(da2 * A * A + da1 * A) / (2.0 * a2 * A + a1)
     dD = 2.0 * A * dA - (4.0 / 3.0) * lam * (dA * t + A)
     dP = 3.0 * A * A * dA - lam * (2.0 * A * dA * g + A * A * dg)
+    if xp is _MATH:
+        return tuple(np.float64(x) for x in (A, P, D, dA, dP, dD))
     return A, P, D, dA, dP, dD
 
 
