@@ -293,23 +293,12 @@ def _penetration_table(lam: float, s_lo: float, s_hi: float):
 
 def _table_range(lam, end, lo, hi):
     """Ends (s_lo, s_hi) of s = log10 t for the table, with Delta(s_lo) >= hi and (branch to
-    t = inf) Delta(s_hi) <= lo: the first of the points s_hi = 2, 4, ... and s_lo = min(s_hi - 1, 0),
-    s_lo - 2, ... that do, tried in one call to the curve (loops go on in the rare cases beyond)."""
-    # Where the branch ends at t = inf, s_hi >= 2 and so s_lo starts at 0.
-    s_hi = np.inf if np.isinf(end.t) else float(np.log10(end.t))
-    lows = min(s_hi - 1.0, 0.0) - np.arange(0.0, 9.0, 2.0)
-    highs = np.arange(2.0, 21.0, 2.0) if np.isinf(end.t) else np.array([])
-    D = _md_curve(10.0**np.concatenate([lows, highs]), lam)[2]
-    D_lo, D_hi = D[:lows.size], D[lows.size:]
-    if np.isinf(end.t):
-        k = np.flatnonzero(D_hi <= lo)
-        s_hi = float(highs[k[0]]) if k.size else 22.0
-        while not k.size and _md_curve(10.0**s_hi, lam)[2] > lo and s_hi < 300:
-            s_hi += 2.0
-    k = np.flatnonzero(D_lo >= hi)
-    if k.size:
-        return float(lows[k[0]]), s_hi
-    s_lo = float(lows[-1]) - 2.0
+    t = inf) Delta(s_hi) <= lo, stepping by 2 from s_hi = 2 and s_lo = min(s_hi - 1, 0): one point
+    of the curve at a time (its fast path for single floats)."""
+    s_hi = float(np.log10(end.t)) if np.isfinite(end.t) else 2.0
+    while np.isinf(end.t) and _md_curve(10.0**s_hi, lam)[2] > lo and s_hi < 300:
+        s_hi += 2.0
+    s_lo = min(s_hi - 1.0, 0.0)
     while _md_curve(10.0**s_lo, lam)[2] < hi:
         s_lo -= 2.0
     return s_lo, s_hi
@@ -328,7 +317,7 @@ def _invert_penetration(delta, lam, end):
     if todo.size == 0:
         return (x.reshape(delta.shape) for x in (t_out, A_out, P_out))
     target = flat[todo]
-    s_lo, s_hi = _table_range(lam, end, target.min(), target.max())
+    s_lo, s_hi = _table_range(lam, end, float(target.min()), float(target.max()))
     grid, ygrid, slope = _penetration_table(lam, float(s_lo), float(s_hi))
     # Table look-up for a bracket [a, b] and a cubic-Hermite start for s(y).
     y = _inverse_variable(target, end)[0]
