@@ -211,11 +211,7 @@ def md_radius(t, lam):
     ----------
     Maugis (1992); Adams et al., Eq (11).
     """
-    t, lam = _check_t_lam(t, lam)
-    f1, f2, *_ = _brackets(t)
-    A = _radius_from_brackets(lam, f1, f2)[0]
-    _check_radius(A, t, lam)
-    return A
+    return md_curve(t, lam)[0]  # the same evaluation as md_load and md_penetration
 
 
 def md_load(t, lam):
