@@ -166,6 +166,9 @@ class Tabulation:
 
     def _block_sums(self, block, lo, hi, order):
         h = self.heights
+        if block.size <= 2:  # a Newton step's separation: one density row over the nodes in reach
+            a, b = self.u.searchsorted(lo), self.u.searchsorted(hi)
+            return h.weighted_sums(block, self.u[a:b], self.weights[a:b], order)
         a, b = self.direct_u.searchsorted(lo), self.direct_u.searchsorted(hi)
         parts = [h.weighted_sums(block, self.direct_u[a:b], self.direct_w[a:b], order)]
         a, b = self.centers.searchsorted(lo - 1.0), self.centers.searchsorted(hi + 1.0)
