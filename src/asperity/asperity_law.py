@@ -26,7 +26,7 @@ import numpy as np
 
 from . import groups
 from ._validation import as_float_array, check_nonnegative, check_poisson, check_positive
-from .friction_stress import FrictionLaw, HurtadoKim
+from .friction_stress import ConstantShear, FrictionLaw, HurtadoKim
 from .hertz import hertz_force, hertz_radius
 from .maugis_dugdale import A_MAX, LAMBDA_RANGE, md_branch_end, md_curve, md_solve, md_t_of_radius
 
@@ -71,7 +71,7 @@ class ModelParameters:
         if np.ndim(self.nu) != 0:
             raise ValueError("nu must be a scalar")
         object.__setattr__(self, "nu", float(check_poisson(self.nu)))
-        if not isinstance(self.friction, FrictionLaw):
+        if not isinstance(self.friction, HurtadoKim | ConstantShear | FrictionLaw):  # the protocol check last: slow
             raise ValueError("friction must provide stress(a_bar) and breakpoints() "
                              "(e.g. HurtadoKim() or ConstantShear(tau))")
 

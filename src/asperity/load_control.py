@@ -340,13 +340,18 @@ def _branch_guess(P, grid, Pg, dPg):
     mb = dPg[j] / np.hypot(s, Pg[j]) * h
     with np.errstate(divide="ignore", invalid="ignore"):
         t = np.clip(np.where(ya != yb, (ya - y) / (ya - yb), 0.5), 0.0, 1.0)
-        for _ in range(4):  # Newton on the Hermite cubic in t in [0, 1]
-            t2, t3 = t * t, t * t * t
-            H = ((2 * t3 - 3 * t2 + 1) * ya + (t3 - 2 * t2 + t) * ma
-                 + (-2 * t3 + 3 * t2) * yb + (t3 - t2) * mb)
-            dH = ((6 * t2 - 6 * t) * ya + (3 * t2 - 4 * t + 1) * ma
-                  + (-6 * t2 + 6 * t) * yb + (3 * t2 - 2 * t) * mb)
-            t = np.clip(np.where(dH != 0, t - (H - y) / dH, t), 0.0, 1.0)
+        # The Hermite cubic as c3 t^3 + c2 t^2 + c1 t + c0 (minus y), t in [0, 1].
+        c0, c1 = ya - y, ma
+        c2 = 3.0 * (yb - ya) - 2.0 * ma - mb
+        c3 = 2.0 * (ya - yb) + ma + mb
+        for _ in range(4):  # Newton on it; stops early once every step is at rounding level
+            H = ((c3 * t + c2) * t + c1) * t + c0
+            dH = (3.0 * c3 * t + 2.0 * c2) * t + c1
+            t_new = np.clip(np.where(dH != 0, t - H / dH, t), 0.0, 1.0)
+            if not (np.abs(t_new - t) > 1e-13).any():
+                t = t_new
+                break
+            t = t_new
     t = np.where(np.isfinite(t), t, 0.5)
     return a, b, a + h * t
 
