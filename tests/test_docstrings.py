@@ -17,7 +17,8 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
                    "asperity.heights", "asperity.jackson_green", "asperity.jackson_green_fits",
                    "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity", "asperity.cycle",
-                   "asperity.cycle_run", "asperity.cycle_integrals", "asperity.instrument", "asperity.physical_cycle"]
+                   "asperity.cycle_run", "asperity.cycle_integrals", "asperity.instrument", "asperity.physical_cycle",
+                   "asperity.sweeps.run"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -41,6 +42,7 @@ FULL_DOCS = {
     "asperity.cycle": ["cycle", "preload_curve"],
     "asperity.physical_cycle": ["physical_cycle", "physical_preload_curve"],
     "asperity.instrument": ["base_displacement"],
+    "asperity.sweeps.run": ["sweep"],
 }
 
 

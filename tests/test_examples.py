@@ -111,3 +111,20 @@ def test_afm_cycle_example(tmp_path, capsys):
     assert surface_only.energy_J == contact.cycle(preload=5e-6, n=400).energy_J
     assert sweep.pull_off_N[-1] == pytest.approx(contact.pull_off().force, rel=1e-10)
     assert any(j["branch"] == "retract" for j in measured.jumps)
+
+
+def test_sweep_map_example(tmp_path, capsys):
+    pytest.importorskip("xarray")
+    pytest.importorskip("netCDF4")
+    pytest.importorskip("matplotlib")
+    import asperity
+
+    example = load_example("sweep_map")
+    ds = example.main(["--out", str(tmp_path), "--scheduler", "serial", "--n", "3"])
+    assert (tmp_path / "pull_off.png").read_bytes()[:4] == b"\x89PNG"
+    assert "9 parameter sets" in capsys.readouterr().out
+    # A cell of the map, straight from the library
+    m = asperity.Model(float(ds.alpha[1]), 1000.0, float(ds.gamma[2]))
+    np.testing.assert_array_equal(ds.mu.values[1, 2], m.load_curve(ds.P.values).mu)
+    assert ds.pull_off.values[1, 2] == m.pull_off().force
+    ds.close()

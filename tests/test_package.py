@@ -21,6 +21,7 @@ def test_public_names_are_the_defining_modules_objects():
     import asperity.maugis_dugdale
     import asperity.multi_asperity
     import asperity.plasticity
+    import asperity.sweeps
 
     for name in asperity.__all__:
         value = getattr(asperity, name)
@@ -29,7 +30,7 @@ def test_public_names_are_the_defining_modules_objects():
             continue
         homes = [m for m in (asperity.curves, asperity.cycle, asperity.friction_stress, asperity.heights,
                              asperity.maugis_dugdale, asperity.multi_asperity, asperity.elastic_plastic,
-                             asperity.plasticity) if hasattr(m, name)]
+                             asperity.plasticity, asperity.sweeps) if hasattr(m, name)]
         assert homes and getattr(homes[0], name) is value, name
 
 

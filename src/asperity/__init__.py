@@ -62,6 +62,7 @@ _EXPORTS = {
     "mean_pressure": "multi_asperity",
     "normal_force": "multi_asperity",
     "real_contact_area": "multi_asperity",
+    "sweep": "sweeps",
 }
 
 #: Public submodules reachable as attributes (``asperity.jkr``), imported on first access.
@@ -94,6 +95,7 @@ _SUBMODULES = (
     "quantities",
     "reference",
     "studies",
+    "sweeps",
     "topography",
     "units",
     "validation",
@@ -129,6 +131,7 @@ __all__ = [
     "mean_pressure",
     "normal_force",
     "real_contact_area",
+    "sweep",
 ]
 
 

@@ -33,6 +33,7 @@ EXTRAS = {
     "distributed": "sweep",
     "zarr": "sweep",
     "h5netcdf": "sweep",
+    "netCDF4": "sweep",
     "tqdm": "sweep",
     "bokeh": "explore",
 }

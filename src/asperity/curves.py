@@ -14,7 +14,7 @@ a given load is the first separation, coming from full contact, at which
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -139,6 +139,7 @@ class Model:
         self.d_search = 10.0 - self.law.u_end
         self._tab: Tabulation | None = None
         self._pull_off: dict[float, PullOff] = {}
+        self._parameters_dict: dict | None = None
 
     # -- cache ----------------------------------------------------------------------
     def tabulation(self, d_min: float, d_max: float) -> Tabulation:
@@ -150,13 +151,15 @@ class Model:
         return self._tab
 
     def _parameters(self):
-        p = asdict(self.params)
-        p["friction"] = repr(self.params.friction)
-        if self.interaction.active:
-            p["interaction"] = repr(self.interaction)
-        if callable(getattr(self.law, "parameters", None)):  # e.g. the Jackson-Green law and its hardness
-            p.update(self.law.parameters())
-        return p
+        if self._parameters_dict is None:
+            p = {f.name: getattr(self.params, f.name) for f in fields(self.params)}
+            p["friction"] = repr(self.params.friction)
+            if self.interaction.active:
+                p["interaction"] = repr(self.interaction)
+            if callable(getattr(self.law, "parameters", None)):  # e.g. the Jackson-Green law and its hardness
+                p.update(self.law.parameters())
+            self._parameters_dict = p
+        return dict(self._parameters_dict)
 
     def _result(self, d, sums, d_local=None) -> CurveResult:
         """The curve at (apparent) separations ``d``; ``d_local``: the separations the asperities feel."""
@@ -186,7 +189,8 @@ class Model:
         """Largest tensile force for -3 <= d/sigma <= ``d_max``: :func:`pull_off` for this model (cached).
 
         ``d_max`` defaults to :attr:`d_search`, 10 sigma beyond the end of the asperities'
-        stable branch.
+        stable branch.  After :meth:`load_curve` the search made on its grid (which spans
+        ``[d_lo <= -3, d_search]``) is reused.
         """
         if d_max is None:
             d_max = self.d_search
@@ -206,14 +210,19 @@ class Model:
         if not self.params.adhesive and np.any(P <= 0):
             raise ValueError("P (load) must be > 0 without adhesion (gamma = 0); "
                              f"got min {P.min():g}")
-        d_hi = self.d_search
-        d_lo = start_separation(self.params, float(P.max()), d_hi)
-        d_lo, self._tab = bracket_low(self.tabulation(d_lo, d_hi), float(P.max()), d_lo, d_hi)
-        branch = stable_branch(self._tab, d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
+        d_hi, P_max = self.d_search, float(P.max())
+        d_lo = start_separation(self.params, P_max, d_hi)
+        branch = stable_branch(self.tabulation(d_lo, d_hi), d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
                                pull_off=self._pull_off.get(d_hi))
+        if not branch.P[0] > P_max:  # the Hertz estimate fell short: step down (bracket_low) and redo
+            d_lo, self._tab = bracket_low(branch.tab, P_max, d_lo - max(2.0, 0.5 * abs(d_lo)), d_hi)
+            branch = stable_branch(self._tab, d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
+                                   pull_off=branch.pull_off)
         self._tab = branch.tab
-        if branch.pull_off is not None:
-            self._pull_off.setdefault(d_hi, branch.pull_off)
+        # The branch's grid spans [d_lo <= -3, d_hi]: the pull-off search it made (or its finding
+        # that the force stays compressive there) serves pull_off() too.
+        self._pull_off.setdefault(d_hi, branch.pull_off if branch.pull_off is not None
+                                  else PullOff(0.0, float("nan"), False))
         floor = branch.P[-1]
         if P.min() < floor:
             what = "minus the pull-off force" if floor < 0 else f"the force at d/sigma = {branch.grid[-1]:.4g}"

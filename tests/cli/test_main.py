@@ -56,7 +56,7 @@ def test_every_command_module_is_registered():
     sub = next(a for a in parser._actions if a.dest == "command")
     assert list(sub.choices) == list(COMMANDS)
     assert set(COMMANDS) == {"reproduce", "separation", "load", "pulloff", "cycle", "surface", "materials", "md",
-                             "bem", "explore"}
+                             "bem", "explore", "sweep", "plot"}
     for name, module in COMMANDS.items():
         assert module.NAME == name and module.HELP and callable(module.add_arguments) and callable(module.run)
 
@@ -104,6 +104,9 @@ def test_startup_imports_no_numerics(code):
     (["reproduce", "--out", "{tmp}/paper"], "matplotlib", "plot"),
     (["load", *AU, "--load", "1mN"], "pint", "units"),
     (["surface", "{tmp}/scan.x3p"], "SurfaceTopography", "topography"),
+    (["sweep", *MODEL, "--P", "1", "--out", "{tmp}/m.nc"], "xarray", "sweep"),
+    (["sweep", *MODEL, "--P", "1", "--out", "{tmp}/m.nc", "--scheduler", "serial"], "netCDF4", "sweep"),
+    (["plot", "{tmp}", "--x", "alpha", "--y", "gamma", "--z", "mu"], "xarray", "sweep"),
 ])
 def test_missing_optional_dependency_is_one_line(capsys, monkeypatch, tmp_path, argv, module, extra):
     monkeypatch.setitem(sys.modules, module, None)  # makes "import module" fail

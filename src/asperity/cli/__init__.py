@@ -4,7 +4,8 @@
 ``load``, ``pulloff`` and ``md`` compute curves for one's own parameters; ``cycle`` an
 approach-retract cycle (hysteresis, energy dissipated, pull-off); ``surface`` reads a
 measured surface, ``bem`` checks the model against a boundary-element contact of it,
-``materials`` lists the materials table and ``explore`` serves a live view of the model to
+``materials`` lists the materials table, ``sweep`` runs grids of parameter sets (NetCDF/Zarr,
+on Dask) and ``plot`` draws them as heat maps; ``explore`` serves a live view of the model to
 the browser.  Every error prints one line and exits with status 2.
 
 One module per command (:data:`COMMANDS`), each with ``NAME``, ``HELP``,
@@ -22,14 +23,14 @@ import sys
 
 from .._optional import MissingDependency
 from .._version import __version__
-from . import bem, cycle, explore, load, materials, md, pulloff, reproduce, separation, surface
+from . import bem, cycle, explore, load, materials, md, plot, pulloff, reproduce, separation, surface, sweep
 from ._args import UNITS, UsageError, join_negative_lists, parse_list
 
 __all__ = ["main", "build_parser", "parse_list", "UsageError", "COMMANDS"]
 
 #: Command name -> its module, in the order ``asperity --help`` lists them.
 COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, cycle, surface, bem, materials,
-                                               md, explore)}
+                                               md, sweep, plot, explore)}
 
 
 class _Parser(argparse.ArgumentParser):
