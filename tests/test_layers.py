@@ -27,7 +27,8 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "asperity"
 LAYERS = [
     ("base", {"_validation", "_csv", "_optional", "_version", "_atomic", "_json", "units", "quadrature",
               "quantities"}),
-    ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch"}),
+    ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch",
+                              "maugis_dugdale_load", "cos", "amontons"}),
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),

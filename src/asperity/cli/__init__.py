@@ -2,7 +2,8 @@
 
 ``asperity reproduce`` recomputes the paper's figures and Table 1; ``separation``,
 ``load``, ``pulloff`` and ``md`` compute curves for one's own parameters; ``surface``
-reads a measured surface and ``materials`` lists the materials table.  Every error
+reads a measured surface, ``materials`` lists the materials table and ``fit`` fits a model
+to measured data.  Every error
 prints one line and exits with status 2.
 
 One module per command (:data:`COMMANDS`), each with ``NAME``, ``HELP``,
@@ -20,13 +21,13 @@ import sys
 
 from .._optional import MissingDependency
 from .._version import __version__
-from . import load, materials, md, pulloff, reproduce, separation, surface
+from . import fit, load, materials, md, pulloff, reproduce, separation, surface
 from ._args import UNITS, UsageError, join_negative_lists, parse_list
 
 __all__ = ["main", "build_parser", "parse_list", "UsageError", "COMMANDS"]
 
 #: Command name -> its module, in the order ``asperity --help`` lists them.
-COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, surface, materials, md)}
+COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, surface, materials, md, fit)}
 
 
 class _Parser(argparse.ArgumentParser):
