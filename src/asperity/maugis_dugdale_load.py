@@ -62,7 +62,8 @@ def md_solve_load(P, lam):
     ----------
     P : array_like
         Load :math:`P/(\pi wR)` (negative: tensile), from the load-controlled pull-off
-        :math:`P_{po}` (JKR: -3/2, DMT: -2) to :data:`P_MAX`.  May be empty.
+        :math:`P_{po}` (JKR: -3/2, DMT: -2; within 1e-12 relative below it counts as it) to
+        :data:`P_MAX`.  May be empty.
     lam : float
         Maugis parameter :math:`\lambda`, scalar in ``[1e-12, 1e12]``
         (:data:`~asperity.maugis_dugdale.LAMBDA_RANGE`).
@@ -93,6 +94,9 @@ def md_solve_load(P, lam):
     lam = float(scalar(check_lambda(lam), "lam"))
     P = as_float_array(P, "P", allow_empty=True)
     po = md_pull_off(lam, "load")
+    # A load within rounding (1e-12 relative) below the pull-off, as a round trip through SI
+    # units gives, is the pull-off itself.
+    P = np.where((P < po.P) & (P >= po.P * (1.0 + 1e-12)), po.P, P)
     if np.any((P < po.P) | (P > P_MAX)):
         raise ValueError(f"P (load over pi w R) must lie in [{po.P:.17g}, {P_MAX:g}] for lam = {lam:g}: from the "
                          f"load-controlled pull-off to P_MAX; got values from {P.min():g} to {P.max():g}")

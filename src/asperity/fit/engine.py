@@ -15,7 +15,8 @@ the optimiser works in decades.  User expressions (``expr``) are in linear names
   stated uncertainties (the x part, effective variance, Orear 1982, when an x uncertainty
   column is given; :math:`f'` by central differences at the current parameters);
 * ``'relative'``: :math:`s_i = |y_i|`, relative residuals (friction spans decades);
-* ``'none'``: :math:`s_i = 1`;
+* ``'none'``: uniform, :math:`s_i = \mathrm{rms}(y)` of the data set, so that data sets in
+  different units (normal force in newtons, relative friction) weigh alike in a joint fit;
 * ``'auto'`` (default): ``column`` when the data carry uncertainties, else ``relative``
   for friction and pull-off data and ``none`` for force-separation data (which cross zero).
 
@@ -107,7 +108,8 @@ class Term:
         """The residual scale s_i of each point under ``weights``."""
         d = self.data
         if weights == "none":
-            return np.ones(len(d))
+            rms = float(np.sqrt(np.mean(d.y**2)))
+            return np.full(len(d), rms if rms > 0 else 1.0)
         if weights == "relative":
             return np.abs(d.y)
         var = np.zeros(len(d)) if d.y_err is None else d.y_err**2
@@ -297,7 +299,8 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
     if n_free == 0:
         raise ValueError("no parameter varies: give at least one in vary (--vary)")
     if problem.n_points < n_free:
-        raise ValueError(f"{problem.n_points} data points cannot fix {n_free} free parameters "
+        raise ValueError(f"{problem.n_points} data point{'s' if problem.n_points != 1 else ''} cannot fix {n_free} "
+                         f"free parameter{'s' if n_free != 1 else ''} "
                          f"({', '.join(p.name for p in problem.free)}): fix some or add data")
     return problem
 
@@ -346,12 +349,12 @@ def _check_values(params):
             continue
         if not math.isfinite(p.value):
             raise ValueError(f"parameter {name!r} must be finite, got {p.value!r}")
-        if not (p.lo <= p.value <= p.hi):
-            raise ValueError(f"the bounds of {name} [{p.lo:g}, {p.hi:g}] exclude its start value {p.value:g}")
         q_lo, q_hi = p.spec.lo, p.spec.hi
         if p.value < q_lo or p.value > q_hi or (p.vary and p.spec.log and p.value <= 0):
             raise ValueError(f"parameter {name!r} = {p.value:g} is outside its valid range ({p.spec.meaning}; "
                              f"{q_lo:g} .. {q_hi:g}{', > 0: fitted in log10' if p.spec.log else ''})")
+        if not (p.lo <= p.value <= p.hi):
+            raise ValueError(f"the bounds of {name} [{p.lo:g}, {p.hi:g}] exclude its start value {p.value:g}")
         if p.log and p.lo < 0:
             raise ValueError(f"bounds of {name}: the lower bound must be >= 0 ({name} is fitted in log10), "
                              f"got {p.lo:g}")

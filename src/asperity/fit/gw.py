@@ -154,6 +154,9 @@ class GWFit(FitModel):
 
     # -- results --------------------------------------------------------------------------
     def curve(self, data, v, x):
+        if data.kind == "pull_off":
+            return FitCurve({"row": data.x, "pull_off_N" if data.physical else "pull_off": self.pull_off(data, v),
+                             **data.conditions}, dict(v))
         model, fs, ds, contact = self._build(v)
         if data.kind == "friction":
             grid = np.asarray(x, dtype=float) / fs
@@ -169,9 +172,12 @@ class GWFit(FitModel):
             if contact is not None:
                 return replace(contact.separation_curve(d_bar * ds), d=d_bar * ds + d0)
             return replace(model.separation_curve(d_bar), d=d_bar + d0)
-        return FitCurve({"row": data.x, "pull_off_N" if data.physical else "pull_off": self.pull_off(data, v)}, dict(v))
 
     def derived(self, v):
+        needed = (("alpha", "beta", "gamma", "h_over_b") if self.contact is None else
+                  ("sigma_s_m", "R_m", "eta_per_m2", "area_m2", "w_J_m2", "b_m", "h_m"))
+        if any(name not in v for name in needed):
+            return {}  # some are given per row (pull-off conditions)
         if self.contact is None:
             if v["gamma"] <= 0:
                 return {"lam": 0.0}

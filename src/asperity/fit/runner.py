@@ -63,12 +63,15 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200) -> FitResult:
     minimizer = lmfit.Minimizer(objective, problem.lmfit_parameters(), scale_covar=not absolute)
     n_free = len(problem.free)
     kws = {"x_scale": "jac", "ftol": 1e-12, "xtol": 1e-12, "gtol": 1e-12, "max_nfev": 200 * (n_free + 1)}
-    result = minimizer.least_squares(**kws)
-    if problem.loss != "linear" and not result.aborted:
-        mad = float(np.median(np.abs(result.residual)))
-        result = minimizer.least_squares(params=result.params, loss=problem.loss, f_scale=1.4826 * mad or 1.0, **kws)
-    nfev = objective.calls
-    analysis = _analyse(problem, minimizer, result, absolute, ci)
+    # lmfit divides by zero standard errors of degenerate fits (handled in _analyse): no warnings.
+    with np.errstate(all="ignore"):
+        result = minimizer.least_squares(**kws)
+        if problem.loss != "linear" and not result.aborted:
+            mad = float(np.median(np.abs(result.residual)))
+            result = minimizer.least_squares(params=result.params, loss=problem.loss,
+                                             f_scale=1.4826 * mad or 1.0, **kws)
+        nfev = objective.calls
+        analysis = _analyse(problem, minimizer, result, absolute, ci)
     objective_profile = objective.calls - nfev
     return _result(problem, result, analysis, nfev, objective_profile, lmfit, grid)
 
