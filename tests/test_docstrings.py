@@ -15,7 +15,8 @@ import asperity
 DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
-                   "asperity.heights"]
+                   "asperity.heights", "asperity.maugis_dugdale_load", "asperity.cos", "asperity.amontons",
+                   "asperity.fit.api"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -23,9 +24,17 @@ FULL_DOCS = {
     "asperity.multi_asperity": ["contact_fraction", "normal_force", "friction_force", "real_contact_area"],
     "asperity.maugis_dugdale": ["md_radius", "md_load", "md_penetration", "md_curve", "md_t_of_radius"],
     "asperity.maugis_dugdale_branch": ["md_solve", "md_branch_end", "md_pull_off"],
-    "asperity.hertz": ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md"],
-    "asperity.jkr": ["jkr_load", "jkr_penetration", "jkr_pull_off"],
-    "asperity.dmt": ["dmt_load", "dmt_penetration"],
+    "asperity.hertz": ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md", "hertz_contact_radius",
+                       "hertz_normal_force"],
+    "asperity.jkr": ["jkr_load", "jkr_penetration", "jkr_pull_off", "jkr_solve_load", "jkr_solve", "jkr_contact_radius",
+                     "jkr_normal_force", "jkr_pull_off_force"],
+    "asperity.dmt": ["dmt_load", "dmt_penetration", "dmt_solve_load", "dmt_solve", "dmt_contact_radius",
+                     "dmt_normal_force", "dmt_pull_off_force"],
+    "asperity.maugis_dugdale_load": ["md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force"],
+    "asperity.cos": ["cos_contact_radius", "cos_friction", "cos_lambda", "cos_alpha", "cos_pull_off_hat",
+                     "cos_radius_hat"],
+    "asperity.amontons": ["amontons_friction"],
+    "asperity.fit.api": ["fit_friction_load", "fit_force_separation", "fit_pull_off", "fit_joint", "compare_models"],
     "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
                               "invert_branch"],
     "asperity.pull_off_search": ["find_pull_off"],

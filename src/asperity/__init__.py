@@ -8,12 +8,14 @@ Layers, each importing only downward:
 
 * single-asperity laws: :mod:`~asperity.friction_stress`, :mod:`~asperity.hertz`,
   :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`
+  (:mod:`~asperity.maugis_dugdale_load` under load control), :mod:`~asperity.cos`,
+  :mod:`~asperity.amontons`
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
   :mod:`~asperity.heights`
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
   :mod:`~asperity.multi_asperity`
-* curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
-  the command line: :mod:`~asperity.cli`
+* curves: :mod:`~asperity.curves`; fitting measured data: :mod:`~asperity.fit`; the
+  paper's figures: :mod:`~asperity.studies`; the command line: :mod:`~asperity.cli`
 
 Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
 the first use of a name below (``asperity.load_curve``) or of a submodule
@@ -55,10 +57,13 @@ _EXPORTS = {
 #: Public submodules reachable as attributes (``asperity.jkr``), imported on first access.
 #: Any other public submodule (one added later) is found the same way.
 _SUBMODULES = (
+    "amontons",
     "asperity_law",
     "cli",
+    "cos",
     "curves",
     "dmt",
+    "fit",
     "friction_stress",
     "groups",
     "heights",
@@ -66,6 +71,7 @@ _SUBMODULES = (
     "jkr",
     "materials",
     "maugis_dugdale",
+    "maugis_dugdale_load",
     "multi_asperity",
     "physical",
     "quadrature",

@@ -42,7 +42,8 @@ class ParameterEstimate:
         Best value (linear units).
     stderr : float or None
         Standard error (linear units; for a log-scaled parameter
-        :math:`\\ln 10 \\cdot p \\cdot s_{\\log_{10} p}`), None when the data cannot determine it.
+        :math:`\\ln 10 \\cdot p \\cdot s_{\\log_{10} p}`; for an expression lmfit's propagation),
+        None when the data cannot determine it or the parameter is fixed.
     ci95 : tuple
         ``(lo, hi)`` 95 % interval; an end is None where the data give no limit; ``(None,
         None)`` for a fixed or undetermined parameter.
@@ -195,7 +196,9 @@ class FitResult:
         width = max(len(k) for k in self.parameters) if self.parameters else 4
         for p in self.parameters.values():
             if not p.vary:
-                lines.append(f"  {p.name:<{width}}  {p.value:<12.6g} ({p.method}) {p.unit}")
+                err = "" if p.stderr is None else f"+- {p.stderr:.3g} "
+                lines.append(f"  {p.name:<{width}}  {p.value:<12.6g} {err}({p.method}{' ' + p.note if p.note else ''}) "
+                             f"{p.unit}")
                 continue
             err = "undetermined" if p.stderr is None else f"+- {p.stderr:.3g}"
             lo, hi = ("-" if x is None else f"{x:.6g}" for x in p.ci95)

@@ -18,13 +18,13 @@ from .._optional import require
 from .engine import Problem
 from .result import FitResult, ParameterEstimate
 from .uncertainty import (
-    PROFILE_REL_SE,
     central_jacobian,
     correlated_pairs,
     null_directions,
     profile_intervals,
     pseudo_covariance,
     wald_interval,
+    wald_reliable,
 )
 
 __all__ = ["CI_METHODS", "run", "grid_for"]
@@ -131,19 +131,19 @@ def _analyse(problem, minimizer, result, absolute, ci):
         if n in undetermined or n in at_bound:
             continue
         p = by_fitted[v]
-        intervals[n] = wald_interval(x[i], se[i], quantile, p.log)
+        lo, hi = wald_interval(x[i], se[i], quantile, p.log)
+        intervals[n] = (max(lo, p.lo), min(hi, p.hi))
+        if intervals[n] != (lo, hi):
+            notes[n] = "Wald interval cut at a bound"
         methods[n] = "wald"
-        rel = se[i] if p.log else se[i] / max(abs(x[i]), 1e-300)
-        lo, hi = bounds[v]
-        crosses = x[i] - quantile * se[i] < lo or x[i] + quantile * se[i] > hi
-        correlated = any(n in (a, b) for a, b, _ in pairs)
-        if ci == "profile" or (ci == "auto" and (rel > PROFILE_REL_SE or crosses or correlated)):
+        if ci == "profile" or (ci == "auto" and problem.loss == "linear" and not wald_reliable(
+                problem.residual, result, cov, i, quantile, absolute)):
             want_profile.append(v)
     if want_profile and not absolute and _exact(problem, result):
         want_profile = []  # the data are fitted to rounding: every interval has zero width
-    if want_profile and problem.loss != "linear":
-        warnings.append(f"with loss={problem.loss!r} the intervals are Wald intervals of the linearised "
-                        "problem; the profile likelihood needs the linear loss")
+    if problem.loss != "linear":
+        warnings.append(f"with loss={problem.loss!r} the standard errors and intervals are those of the linearised "
+                        "problem (Wald): approximate; the profile likelihood needs the linear loss")
         want_profile = []
     if want_profile:
         for i, v in enumerate(var_names):
@@ -192,10 +192,13 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid) -> FitResult:
             estimates[name] = ParameterEstimate(name, values[name], stderr, a["intervals"].get(name, (None, None)),
                                                 True, unit, log, a["methods"].get(name, "undetermined"),
                                                 a["notes"].get(name, ""))
+        elif p.expr is not None:  # lmfit propagates the covariance to an expression
+            stderr = result.params[name].stderr
+            stderr = float(stderr) if stderr is not None and np.isfinite(stderr) and not a["undetermined"] else None
+            estimates[name] = ParameterEstimate(name, values[name], stderr, (None, None), False, unit, log, "expr",
+                                                f"= {p.expr}")
         else:
-            method = "expr" if p.expr is not None else "fixed"
-            estimates[name] = ParameterEstimate(name, values[name], None, (None, None), False, unit, log, method,
-                                                f"= {p.expr}" if p.expr else "")
+            estimates[name] = ParameterEstimate(name, values[name], None, (None, None), False, unit, log, "fixed")
     warnings = [note for t in problem.terms for note in t.data.notes]
     if not result.success or result.aborted:
         warnings.append(f"the fit did not converge ({result.message}); the values are the last ones tried")

@@ -21,12 +21,15 @@ Strong correlation (:math:`|r| >` :data:`CORRELATION_LIMIT`) between two identif
 parameters is a warning naming the pair; their intervals stay, computed with the
 correlation.
 
-95 % intervals: Wald (:math:`\hat p \pm t\,s`, in the fitted coordinates, so a log-scaled
-parameter gets an asymmetric interval) where the covariance is reliable, and the profile
-likelihood (lmfit's :func:`~lmfit.conf_interval`: each parameter fixed in turn on a grid,
-the others re-fitted) where it is not: a parameter correlated above the limit, with a
-relative standard error above :data:`PROFILE_REL_SE`, or whose Wald interval reaches a
-bound.  The profile's level is :math:`\Delta\chi^2 = \chi^2_{1,0.95} = 3.84` with stated
+95 % intervals: Wald (:math:`\hat p \pm q\,s`, in the fitted coordinates, so a log-scaled
+parameter gets an asymmetric interval; :math:`q` = 1.96 with stated uncertainties, else
+Student's t) where the covariance is reliable, and the profile likelihood (lmfit's
+:func:`~lmfit.conf_interval`: the parameter fixed in turn, the others re-fitted) where it is
+not.  *Reliable* is tested, not assumed (:func:`wald_reliable`): at the two points where
+the Wald ellipse reaches the ends of the parameter's interval, the chi-square must rise by
+the amount the quadratic approximation predicts (:math:`q^2 s^2`) to within
+:data:`WALD_TOLERANCE` (a factor 1.25 either way), and both points must lie within the
+bounds.  The profile's level is :math:`\Delta\chi^2 = \chi^2_{1,0.95} = 3.84` with stated
 uncertainties, and lmfit's F-test otherwise.
 """
 
@@ -38,8 +41,9 @@ import warnings
 import numpy as np
 from scipy import stats
 
-__all__ = ["RANK_TOL", "JACOBIAN_STEP", "CORRELATION_LIMIT", "PROFILE_REL_SE", "central_jacobian", "null_directions",
-           "pseudo_covariance", "correlated_pairs", "wald_interval", "profile_intervals", "chi2_probability"]
+__all__ = ["RANK_TOL", "JACOBIAN_STEP", "CORRELATION_LIMIT", "WALD_TOLERANCE", "PROFILE_STEPS", "central_jacobian", "null_directions",
+           "pseudo_covariance", "correlated_pairs", "wald_interval", "wald_reliable", "profile_intervals",
+           "chi2_probability"]
 
 #: Relative singular value below which the Jacobian counts as singular (of the central-difference
 #: Jacobian of :func:`central_jacobian`, accurate to about 1e-8).
@@ -49,9 +53,12 @@ RANK_TOL = 1e-6
 JACOBIAN_STEP = 1e-4
 #: |correlation| above which a pair of parameters is reported.
 CORRELATION_LIMIT = 0.95
-#: Standard error (fitted coordinates; log10 units for log-scaled parameters, else relative)
-#: above which the Wald interval is replaced by the profile likelihood.
-PROFILE_REL_SE = 0.1
+#: Steps of one standard error (fitted coordinates) the profile takes outward before it calls a
+#: side flat (lmfit's ``maxiter``).
+PROFILE_STEPS = 20
+#: How far (as a factor) the chi-square rise at the ends of a Wald interval may differ from the
+#: quadratic prediction before the profile likelihood replaces it.
+WALD_TOLERANCE = 1.25
 
 
 def central_jacobian(residual, params, var_names, log_names) -> np.ndarray:
@@ -184,6 +191,55 @@ def wald_interval(value: float, se: float, quantile: float, log: bool) -> tuple[
     return (10.0**lo, 10.0**hi) if log else (lo, hi)
 
 
+def wald_reliable(residual, result, cov, i, quantile, absolute) -> bool:
+    r"""Whether the quadratic approximation holds over the Wald interval of free parameter ``i``.
+
+    Moves to :math:`\hat\theta \pm q\,\Sigma e_i/\sqrt{\Sigma_{ii}}` (the points of the Wald
+    ellipse at the ends of parameter ``i``'s interval, the others at their conditional best)
+    and compares the rise of chi-square there with the prediction :math:`q^2 s^2`
+    (:math:`s^2` = 1 with stated uncertainties, else the reduced chi-square).
+
+    Parameters
+    ----------
+    residual : callable
+        ``residual(lmfit.Parameters) -> ndarray`` (weighted residuals).
+    result : lmfit.MinimizerResult
+        The best fit.
+    cov : ndarray
+        Covariance of the free parameters (fitted coordinates), order of ``result.var_names``.
+    i : int
+        Index of the parameter.
+    quantile : float
+        :math:`q`.
+    absolute : bool
+        Stated uncertainties.
+
+    Returns
+    -------
+    bool
+        True if both rises are within a factor :data:`WALD_TOLERANCE` of the prediction and
+        both points lie within the bounds.
+    """
+    if not (np.isfinite(cov[i, i]) and cov[i, i] > 0):
+        return False
+    step = quantile * cov[:, i] / math.sqrt(cov[i, i])
+    expected = quantile**2 * (1.0 if absolute else result.chisqr / max(result.nfree, 1))
+    if not expected > 0:
+        return True  # an exact fit: every interval has zero width
+    names = list(result.var_names)
+    for sign in (-1.0, 1.0):
+        params = result.params.copy()
+        for j, name in enumerate(names):
+            value = result.params[name].value + sign * step[j]
+            if not params[name].min <= value <= params[name].max:
+                return False
+            params[name].value = value
+        rise = float(np.sum(np.square(residual(params)))) - result.chisqr
+        if not (1.0 / WALD_TOLERANCE <= rise / expected <= WALD_TOLERANCE):
+            return False
+    return True
+
+
 def chi2_probability(best, new) -> float:
     """Profile level with stated uncertainties: :math:`P(\\chi^2_1 \\le \\chi^2_{new} - \\chi^2_{best})`."""
     return float(stats.chi2.cdf(max(new.chisqr - best.chisqr, 0.0), df=1))
@@ -222,7 +278,7 @@ def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict)
             warnings.simplefilter("always")
             try:
                 ci = lmfit.conf_interval(minimizer, result, p_names=[name], sigmas=[0.95], prob_func=prob,
-                                         maxiter=60)
+                                         maxiter=PROFILE_STEPS)
             except lmfit.minimizer.MinimizerException:
                 out[name] = (None, None, "flat", "flat")
                 continue
@@ -270,7 +326,7 @@ def _profile_one(minimizer, result, name, absolute, bounds):
     for direction, edge in ((-1, lo_b), (1, hi_b)):
         x, step = best, se
         found = None
-        for _ in range(60):
+        for _ in range(PROFILE_STEPS):
             x_new = x + direction * step
             if (direction < 0 and x_new <= edge) or (direction > 0 and x_new >= edge):
                 x_new = edge
