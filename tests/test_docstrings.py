@@ -16,7 +16,7 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
                    "asperity.heights", "asperity.maugis_dugdale_load", "asperity.cos", "asperity.amontons",
-                   "asperity.fit.api"]
+                   "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -34,7 +34,9 @@ FULL_DOCS = {
     "asperity.cos": ["cos_contact_radius", "cos_friction", "cos_lambda", "cos_alpha", "cos_pull_off_hat",
                      "cos_radius_hat"],
     "asperity.amontons": ["amontons_friction"],
-    "asperity.fit.api": ["fit_friction_load", "fit_force_separation", "fit_pull_off", "fit_joint", "compare_models"],
+    "asperity.fit.api": ["fit_friction_load", "fit_force_separation", "fit_pull_off"],
+    "asperity.fit.joint": ["fit_joint"],
+    "asperity.fit.compare": ["compare_models"],
     "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
                               "invert_branch"],
     "asperity.pull_off_search": ["find_pull_off"],

@@ -25,13 +25,16 @@ The modules: :mod:`~asperity.fit.data` and :mod:`~asperity.fit.read` (data),
 :mod:`~asperity.fit.engine` (parameters, weights, residuals), :mod:`~asperity.fit.runner`
 and :mod:`~asperity.fit.uncertainty` (minimiser, errors, identifiability),
 :mod:`~asperity.fit.result` and :mod:`~asperity.fit.plot` (results),
-:mod:`~asperity.fit.api` (the functions above).  lmfit is imported only when a fit runs,
+:mod:`~asperity.fit.api`, :mod:`~asperity.fit.joint` and :mod:`~asperity.fit.compare` (the
+functions above).  lmfit is imported only when a fit runs,
 so ``import asperity.fit`` works without it.  See docs/fitting.md.
 """
 
-from .api import compare_models, fit_force_separation, fit_friction_load, fit_joint, fit_pull_off
+from .api import fit_force_separation, fit_friction_load, fit_pull_off
+from .compare import compare_models
 from .data import KINDS, Dataset, force_separation_data, friction_load_data, pull_off_data
 from .engine import LOSSES, WEIGHTS
+from .joint import fit_joint
 from .models import MODELS, FitCurve, FitModel, ParameterSpec, get_model
 from .read import read_data
 from .result import Comparison, FitResult, ParameterEstimate

@@ -1,9 +1,9 @@
 r"""The fitting functions, named after the data they fit.
 
 :func:`fit_friction_load`, :func:`fit_force_separation` and :func:`fit_pull_off` fit one
-data set; :func:`fit_joint` fits several at once, sharing named parameters;
-:func:`compare_models` fits several models to the same data and ranks them by AIC.  They
-take the same options:
+data set; :func:`~asperity.fit.joint.fit_joint` fits several at once, sharing named
+parameters; :func:`~asperity.fit.compare.compare_models` fits several models to the same data
+and ranks them by AIC.  They take the same options:
 
 ``vary``
     Names of the parameters to fit (default: the model's, see :mod:`asperity.fit.models`);
@@ -41,35 +41,12 @@ Data may be a :class:`~asperity.fit.data.Dataset` or the path of a CSV file (rea
 
 from __future__ import annotations
 
-import os
-
-from .data import Dataset
-from .engine import build_problem
 from .models import get_model
-from .read import read_data
-from .result import Comparison, FitResult
-from .runner import run
+from .read import as_dataset
+from .result import FitResult
+from .runner import fit_problem
 
-__all__ = ["fit_friction_load", "fit_force_separation", "fit_pull_off", "fit_joint", "compare_models"]
-
-_KIND_NAMES = {"friction": "friction-load", "force": "force-separation", "pull_off": "pull-off"}
-
-
-def _data(data, kind, units, drop_nan) -> Dataset:
-    if isinstance(data, Dataset):
-        if kind is not None and data.kind != kind:
-            raise ValueError(f"expected {_KIND_NAMES[kind]} data, got {_KIND_NAMES[data.kind]} data ({data.name})")
-        return data
-    if isinstance(data, str | os.PathLike):
-        return read_data(data, kind=kind, units=units, drop_nan=drop_nan)
-    raise ValueError(f"data must be a Dataset or the path of a CSV file, got {type(data).__name__}")
-
-
-def _fit(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
-         weights="auto", loss="linear", ci="auto", grid=200) -> FitResult:
-    problem = build_problem(datasets, models, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds,
-                            expr=expr, weights=weights, loss=loss)
-    return run(problem, ci=ci, grid=grid)
+__all__ = ["fit_friction_load", "fit_force_separation", "fit_pull_off"]
 
 
 def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, bounds=None, expr=None, contact=None,
@@ -136,8 +113,8 @@ def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, boun
     ----------
     Carpick, Ogletree & Salmeron (1999); Adams et al.; M. Newville et al., LMFIT.
     """
-    data = _data(data, "friction", units, drop_nan)
-    return _fit([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
+    data = as_dataset(data, "friction", units, drop_nan)
+    return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
                 bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid)
 
 
@@ -203,8 +180,8 @@ def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, b
     ----------
     Adams et al., Eqs (6), (18) and Fig 7.
     """
-    data = _data(data, "force", units, drop_nan)
-    return _fit([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
+    data = as_dataset(data, "force", units, drop_nan)
+    return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
                 bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid)
 
 
@@ -265,185 +242,6 @@ def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=No
     ----------
     Johnson, Kendall & Roberts (1971); Maugis (1992); Adams et al., Table 1.
     """
-    data = _data(data, "pull_off", units, drop_nan)
-    return _fit([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
+    data = as_dataset(data, "pull_off", units, drop_nan)
+    return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
                 bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci)
-
-
-def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
-              contact=None, material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-              grid=200) -> FitResult:
-    r"""Fit several data sets at once, sharing named parameters.
-
-    .. math::
-        \min_\theta \sum_k \sum_i \rho\Big(\Big[\frac{f_k(x_{ki};\theta_k) - y_{ki}}{s_{ki}}\Big]^2\Big),
-        \qquad \theta_k = (\theta_{shared}, \theta_{own,k})
-
-    Parameters
-    ----------
-    datasets : sequence of Dataset or path
-        The data sets (any kinds; a path's kind is found from its columns).
-    models : str, FitModel or sequence
-        One model for all, or one per data set.
-    shared : sequence of str, optional
-        Parameters common to all data sets (default: all); the others get one copy per data
-        set, ``<name>_<i>`` with ``i`` from 1.
-    vary : sequence of str, optional
-        Parameters to fit (default: the models'); a base name means every copy.
-    fix, start, bounds, expr : dict, optional
-        Held values, start values, bounds, expressions.
-    contact : PhysicalContact or sequence, optional
-        For ``'gw'`` on physical data: one for all or one per data set.
-    material : Material or str, optional
-        For the single-asperity laws.
-    weights : {'auto', 'column', 'relative', 'none'}
-        Residual weighting (resolved per data set).
-    loss : {'linear', 'soft_l1', 'huber'}
-        Loss function.
-    ci : {'auto', 'wald', 'profile'}
-        How the 95 % intervals are found.
-    units : dict, optional
-        Units of columns without one, when reading files.
-    drop_nan : bool
-        Drop rows holding NaN when reading files.
-    grid : int
-        Points of each fitted curve.
-
-    Returns
-    -------
-    FitResult
-        ``curves`` and ``fitted`` hold one entry per data set.
-
-    Raises
-    ------
-    ValueError
-        As :func:`fit_friction_load`, and for fewer than one data set or a models/contacts list
-        of the wrong length.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from asperity.fit import friction_load_data
-    >>> P = np.linspace(1.0, 5.0, 8)
-    >>> a = friction_load_data(P, 0.3 * (P + 1.0))
-    >>> b = friction_load_data(P, 0.3 * (P + 2.0))
-    >>> res = fit_joint([a, b], "amontons", shared=["mu0"], weights="none")
-    >>> [round(res.parameters[k].value, 6) for k in ("mu0", "P0_1", "P0_2")]
-    [0.3, 1.0, 2.0]
-
-    References
-    ----------
-    M. Newville et al., LMFIT (Parameters shared between data sets).
-    """
-    if isinstance(datasets, Dataset | str | os.PathLike) or not len(datasets):
-        raise ValueError("datasets must be a non-empty sequence of Datasets or paths")
-    datasets = [_data(d, None, units, drop_nan) for d in datasets]
-    n = len(datasets)
-    models = [models] * n if isinstance(models, str) or not hasattr(models, "__len__") else list(models)
-    contacts = list(contact) if isinstance(contact, list | tuple) else [contact] * n
-    if len(models) != n or len(contacts) != n:
-        raise ValueError(f"give one model (and contact) for all {n} data sets or one per data set")
-    built = [get_model(m, material=material, contact=c) for m, c in zip(models, contacts, strict=True)]
-    return _fit(datasets, built, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds, expr=expr,
-                weights=weights, loss=loss, ci=ci, grid=grid)
-
-
-def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind=None, vary=None, fix=None,
-                   start=None, bounds=None, contact=None, material=None, weights="auto", loss="linear", ci="auto",
-                   units=None, drop_nan=False, grid=200) -> Comparison:
-    r"""Fit several models to the same data and rank them by AIC.
-
-    .. math::
-        \mathrm{AIC} = n\ln(\chi^2/n) + 2k,\qquad w_m = \frac{e^{-\Delta_m/2}}{\sum e^{-\Delta/2}}
-
-    (:math:`k` free parameters, :math:`\Delta_m` the AIC above the best, :math:`w_m` the
-    Akaike weight).  Options name parameters of any of the models; each model takes those it
-    has (an option naming a parameter of none of them is an error; a model left with no
-    ``vary`` name varies its defaults).  Every model sees the same data and weighting.
-
-    Parameters
-    ----------
-    data : Dataset or path
-        The data (one data set).
-    models : sequence of str
-        Model names (default: the single-asperity friction laws and the empirical forms).
-    kind : {'friction', 'force', 'pull_off'}, optional
-        The data kind when reading a file (default: from its columns).
-    vary : sequence of str, optional
-        Parameters to fit.
-    fix, start, bounds : dict, optional
-        Held values, start values, bounds.
-    contact : PhysicalContact, optional
-        For ``'gw'`` on physical data.
-    material : Material or str, optional
-        For the single-asperity laws.
-    weights : {'auto', 'column', 'relative', 'none'}
-        Residual weighting.
-    loss : {'linear', 'soft_l1', 'huber'}
-        Loss function.
-    ci : {'auto', 'wald', 'profile'}
-        How the 95 % intervals are found.
-    units : dict, optional
-        Units of columns without one, when reading a file.
-    drop_nan : bool
-        Drop rows holding NaN when reading a file.
-    grid : int
-        Points of each fitted curve.
-
-    Returns
-    -------
-    Comparison
-        The fits, ranked by AIC (best first).
-
-    Raises
-    ------
-    ValueError
-        As :func:`fit_friction_load`, for an empty or repeated model list, and for an option
-        naming a parameter no model has.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from asperity.fit import friction_load_data
-    >>> P = np.linspace(0.0, 5.0, 12)
-    >>> table = compare_models(friction_load_data(P, 0.3 * (P + 1.0)), ["cos", "amontons"], weights="none")
-    >>> table.best.model
-    'amontons'
-
-    References
-    ----------
-    H. Akaike, IEEE Trans. Autom. Control 19 (1974) 716; K. P. Burnham, D. R. Anderson, Model
-    Selection and Multimodel Inference, Springer (2002).
-    """
-    names = [models] if isinstance(models, str) else list(models)
-    if not names or len({str(m).lower() for m in names}) != len(names):
-        raise ValueError(f"models must be a non-empty list of distinct names, got {models!r}")
-    data = _data(data, kind, units, drop_nan)
-    built = [get_model(m, material=material, contact=contact) for m in names]
-    for m in built:
-        m.check(data)
-    options = {"vary": vary, "fix": fix, "start": start, "bounds": bounds}
-    known = set().union(*(m.specs(data) for m in built))
-    for opt, value in options.items():
-        unknown = sorted(set(value or ()) - known)
-        if unknown:
-            raise ValueError(f"{opt}: unknown parameter {unknown[0]!r}; the models' parameters are "
-                             f"{', '.join(sorted(known))}")
-    results = []
-    for m in built:
-        own = set(m.specs(data))
-        mine = {k: _restrict(v, own) for k, v in options.items()}
-        if not mine["vary"]:
-            mine["vary"] = None
-        results.append(_fit([data], [m], weights=weights, loss=loss, ci=ci, grid=grid, **mine))
-    ranked = sorted(results, key=lambda r: (not r.success, r.aic if r.aic == r.aic else float("inf")))
-    return Comparison(tuple(ranked))
-
-
-def _restrict(option, names):
-    """The part of a user option (dict or list of names) naming parameters in ``names``."""
-    if option is None:
-        return None
-    if isinstance(option, dict):
-        return {k: v for k, v in option.items() if k in names}
-    return [k for k in option if k in names]

@@ -35,7 +35,7 @@ from ..groups import maugis_lambda
 from ..physical import PhysicalContact
 from ..surface import Surface
 from ..tabulation import D_MIN
-from .models import FitCurve, FitModel, parameter_spec
+from .base import FitCurve, FitModel, parameter_spec
 
 __all__ = ["GWFit", "HK_NAMES"]
 

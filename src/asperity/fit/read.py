@@ -36,7 +36,7 @@ from ..quantities import FIT_PARAMETERS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 from ..units import parse_quantity
 from .data import KINDS, MAX_ROWS, Dataset
 
-__all__ = ["ROLES", "read_data"]
+__all__ = ["ROLES", "read_data", "as_dataset"]
 
 #: Column roles and their spellings (lower case).  The first is the dimensionless symbol.
 ROLES = {
@@ -341,3 +341,23 @@ def _dataset(kind, values, used, conditions, physical, name, dropped, notes) -> 
     y = "mu" if "mu" in arr else "friction"
     return Dataset("friction", arr["load"], arr[y], "mu" if y == "mu" else "F", physical, y_err=arr.get(f"{y}_err"),
                    x_err=arr.get("load_err"), name=name, n_dropped=dropped, notes=tuple(notes))
+
+
+_KIND_NAMES = {"friction": "friction-load", "force": "force-separation", "pull_off": "pull-off"}
+
+
+def as_dataset(data, kind=None, units=None, drop_nan=False) -> Dataset:
+    """``data`` as a :class:`Dataset`: a Dataset (checked to be of ``kind``) or a CSV path read with :func:`read_data`.
+
+    Raises
+    ------
+    ValueError
+        For data of another kind, anything but a Dataset or a path, or a file :func:`read_data` refuses.
+    """
+    if isinstance(data, Dataset):
+        if kind is not None and data.kind != kind:
+            raise ValueError(f"expected {_KIND_NAMES[kind]} data, got {_KIND_NAMES[data.kind]} data ({data.name})")
+        return data
+    if isinstance(data, str | os.PathLike):
+        return read_data(data, kind=kind, units=units, drop_nan=drop_nan)
+    raise ValueError(f"data must be a Dataset or the path of a CSV file, got {type(data).__name__}")

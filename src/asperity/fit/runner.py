@@ -15,7 +15,7 @@ import numpy as np
 from scipy import stats
 
 from .._optional import require
-from .engine import Problem
+from .engine import Problem, build_problem
 from .result import FitResult, ParameterEstimate
 from .uncertainty import (
     central_jacobian,
@@ -27,7 +27,7 @@ from .uncertainty import (
     wald_reliable,
 )
 
-__all__ = ["CI_METHODS", "run", "grid_for"]
+__all__ = ["CI_METHODS", "run", "fit_problem", "grid_for"]
 
 #: Interval methods.
 CI_METHODS = ("auto", "wald", "profile")
@@ -74,6 +74,14 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200) -> FitResult:
         analysis = _analyse(problem, minimizer, result, absolute, ci)
     objective_profile = objective.calls - nfev
     return _result(problem, result, analysis, nfev, objective_profile, lmfit, grid)
+
+
+def fit_problem(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
+                weights="auto", loss="linear", ci="auto", grid=200) -> FitResult:
+    """Build the problem of ``datasets`` and ``models`` (:func:`~asperity.fit.engine.build_problem`); fit it."""
+    problem = build_problem(datasets, models, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds,
+                            expr=expr, weights=weights, loss=loss)
+    return run(problem, ci=ci, grid=grid)
 
 
 def _analyse(problem, minimizer, result, absolute, ci):

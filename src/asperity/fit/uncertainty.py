@@ -41,9 +41,9 @@ import warnings
 import numpy as np
 from scipy import stats
 
-__all__ = ["RANK_TOL", "JACOBIAN_STEP", "CORRELATION_LIMIT", "WALD_TOLERANCE", "PROFILE_STEPS", "central_jacobian", "null_directions",
-           "pseudo_covariance", "correlated_pairs", "wald_interval", "wald_reliable", "profile_intervals",
-           "chi2_probability"]
+__all__ = ["RANK_TOL", "JACOBIAN_STEP", "CORRELATION_LIMIT", "WALD_TOLERANCE", "PROFILE_STEPS", "central_jacobian",
+           "null_directions", "pseudo_covariance", "correlated_pairs", "wald_interval", "wald_reliable",
+           "profile_intervals", "chi2_probability"]
 
 #: Relative singular value below which the Jacobian counts as singular (of the central-difference
 #: Jacobian of :func:`central_jacobian`, accurate to about 1e-8).
