@@ -174,3 +174,28 @@ def test_compare_ranks_gw_first_on_its_own_data():
     data = friction_load_data(P, asperity.load_curve(P, 0.01, 1000.0, 1e-3).F)
     table = compare_models(data, ["cos", "amontons", "gw"], ci="wald")
     assert [r.model for r in table.results][0] == "gw"
+
+
+# -- properties ------------------------------------------------------------------------------
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.floats(-2.0, 0.3), st.floats(-0.9, 1.0), st.floats(0.0, 1.0))
+def test_property_jkr_recovers_w_and_tau(log_w, log_tau_rel, frac):
+    w, tau = 10.0**log_w, TAU * 10.0**log_tau_rel
+    P = np.linspace(-frac * 1.4 * math.pi * w * R, 50e-9, 30)
+    data = friction_load_data(P, tau * math.pi * jkr.jkr_contact_radius(P, R=R, w=w, E_star=E_STAR) ** 2,
+                              physical=True)
+    res = fit_friction_load(data, "jkr", fix={"R_m": R, "E_star_Pa": E_STAR}, ci="wald")
+    close(res, {"w_J_m2": w, "tau_Pa": tau})
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.floats(0.01, 2.0), st.floats(-0.4, 5.0))
+def test_property_amontons_recovers_mu0_and_P0(mu0, P0):
+    P = np.linspace(0.5, 10.0, 12)
+    res = fit_friction_load(friction_load_data(P, mu0 * (P + P0)), "amontons", weights="none", ci="wald")
+    assert res.values["mu0"] == pytest.approx(mu0, rel=1e-8)
+    assert res.values["P0"] == pytest.approx(P0, rel=1e-7, abs=1e-9)

@@ -53,6 +53,8 @@ WEIGHTS = ("auto", "column", "relative", "none")
 LOSSES = ("linear", "soft_l1", "huber")
 #: Residual of a point whose model cannot be evaluated at the parameters tried.
 PENALTY = 1e100
+#: A log-scaled parameter is fitted within 10**-LOG_LIMIT .. 10**LOG_LIMIT.
+LOG_LIMIT = 300.0
 _LOG_PREFIX = "log10_"
 _CACHE = 64
 
@@ -184,7 +186,12 @@ class Problem:
         optimiser or a profile), the term's residuals are :data:`PENALTY`, so the step is
         rejected; :attr:`failures` counts such evaluations.
         """
-        values = self.values(lmfit_params)
+        try:
+            values = self.values(lmfit_params)
+        except (RuntimeError, OverflowError, ValueError) as err:  # an expression lmfit cannot evaluate
+            self.failures += 1
+            self.last_failure = str(err)
+            return np.full(self.n_points, PENALTY)
         out = []
         for term, weights in zip(self.terms, self.weights, strict=True):
             local = term.local(values)
@@ -204,9 +211,9 @@ class Problem:
         params = lmfit.Parameters()
         later = []
         for p in self.params.values():
-            if p.log:
-                lo = math.log10(p.lo) if p.lo > 0 else -math.inf
-                hi = math.log10(p.hi) if math.isfinite(p.hi) else math.inf
+            if p.log:  # within +-LOG_LIMIT decades, so that 10**x stays finite
+                lo = max(math.log10(p.lo), -LOG_LIMIT) if p.lo > 0 else -LOG_LIMIT
+                hi = min(math.log10(p.hi), LOG_LIMIT) if math.isfinite(p.hi) else LOG_LIMIT
                 if p.expr is None:
                     params.add(p.fitted_name, value=math.log10(p.value), min=lo, max=hi, vary=p.vary)
                 else:

@@ -10,8 +10,8 @@ gives the material (:math:`E`, :math:`\nu`, hence :math:`E^*` and :math:`G^*`, f
 start values of ``sigma_s_m``, ``R_m``, ``eta_per_m2``, ``area_m2`` (the surface),
 ``w_J_m2``, ``b_m``, ``h_m`` and the Hurtado-Kim shear strengths ``tau1_Pa``
 :math:`= \bar\tau_{f1}G^*` and ``tau2_Pa`` :math:`= \bar\tau_{f2}G^*` with ``a1``, ``a2``
-(a constant shear strength :math:`\tau` is ``tau1_Pa = tau2_Pa``).  ``w_J_m2``,
-``tau1_Pa`` and ``tau2_Pa`` vary by default.  Each evaluation builds the contact for the
+(a constant shear strength :math:`\tau` is ``tau1_Pa = tau2_Pa``).  ``w_J_m2`` (unless the
+contact has no adhesion), ``tau1_Pa`` and ``tau2_Pa`` vary by default.  Each evaluation builds the contact for the
 current values and uses its dimensionless model and scales, exactly as
 :meth:`PhysicalContact.load_curve` does.  ``eta_per_m2`` and ``area_m2`` enter only
 through :math:`N = \eta A_0`: vary at most one of them.
@@ -94,7 +94,7 @@ class GWFit(FitModel):
         hk = _hk_of(c)
         specs = [parameter_spec("sigma_s", s.sigma_s, physical=True), parameter_spec("R", s.R, physical=True),
                  parameter_spec("eta", s.eta, physical=True), parameter_spec("area", s.area, physical=True),
-                 parameter_spec("w", c.w, physical=True, vary=True), parameter_spec("b", c.b, physical=True),
+                 parameter_spec("w", c.w, physical=True, vary=c.w > 0), parameter_spec("b", c.b, physical=True),
                  parameter_spec("h", c.h, physical=True),
                  parameter_spec("tau1", hk.tau_f1 * c.G_star, physical=True, vary=True),
                  parameter_spec("tau2", hk.tau_f2 * c.G_star, physical=True, vary=True),

@@ -36,7 +36,7 @@ def _estimate_pull_off(data: Dataset) -> float:
         return float(np.median(data.y))
     P_min = float(np.min(data.x))
     span = float(np.max(data.x) - P_min)
-    return 1.2 * -P_min if P_min < 0 else max(0.05 * span, 1e-300)
+    return max(1.2 * -P_min, 0.05 * span, 1e-300)
 
 
 class _Law(FitModel):
