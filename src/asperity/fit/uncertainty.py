@@ -28,7 +28,7 @@ Student's t) where the covariance is reliable, and the profile likelihood (lmfit
 not.  *Reliable* is tested, not assumed (:func:`wald_reliable`): at the two points where
 the Wald ellipse reaches the ends of the parameter's interval, the chi-square must rise by
 the amount the quadratic approximation predicts (:math:`q^2 s^2`) to within
-:data:`WALD_TOLERANCE` (a factor 1.25 either way), and both points must lie within the
+:data:`WALD_TOLERANCE` (a factor 1.5 either way), and both points must lie within the
 bounds.  The profile's level is :math:`\Delta\chi^2 = \chi^2_{1,0.95} = 3.84` with stated
 uncertainties, and lmfit's F-test otherwise.
 """
@@ -58,7 +58,7 @@ CORRELATION_LIMIT = 0.95
 PROFILE_STEPS = 20
 #: How far (as a factor) the chi-square rise at the ends of a Wald interval may differ from the
 #: quadratic prediction before the profile likelihood replaces it.
-WALD_TOLERANCE = 1.25
+WALD_TOLERANCE = 1.5
 
 
 def central_jacobian(residual, params, var_names, log_names) -> np.ndarray:
