@@ -42,7 +42,7 @@ def fit_all(data):
     contact = PhysicalContact(gold, SURFACE)
     gw = fit_friction_load(data, "gw", contact=contact, vary=["w_J_m2", "tau1_Pa"], expr={"tau2_Pa": "tau1_Pa / 30"})
     laws = compare_models(data, ["jkr", "dmt", "md", "cos", "amontons"], material=gold,
-                          fix={"R_m": PROBE_RADIUS}, start={"sigma0_Pa": 1e9}, ci="wald")
+                          fix={"R_m": PROBE_RADIUS}, ci="wald")
     ranked = Comparison(tuple(sorted([gw, *laws.results], key=lambda r: r.aic)))
     return gw, ranked
 

@@ -16,7 +16,7 @@ from ._args import UsageError, add_contact_arguments, output_file, quantity
 NAME = "fit"
 HELP = "fit a model to measured friction-load, force-separation or pull-off data"
 DESCRIPTION = ("Fit the multi-asperity model (gw) or a single-asperity friction law (hertz, jkr, dmt, md, cos, "
-               "amontons) to a CSV file; report values, standard errors, 95%% intervals, chi-square, AIC/BIC and "
+               "amontons) to a CSV file; report values, standard errors, 95% intervals, chi-square, AIC/BIC and "
                "what the data cannot determine.")
 EPILOG = """Data columns (found by their header):
   dimensionless  P, F or mu, d, P_off; uncertainties F_err, mu_err, P_err, d_err
