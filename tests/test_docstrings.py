@@ -18,7 +18,9 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.heights", "asperity.jackson_green", "asperity.jackson_green_fits",
                    "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity", "asperity.cycle",
                    "asperity.cycle_run", "asperity.cycle_integrals", "asperity.instrument", "asperity.physical_cycle",
-                   "asperity.sweeps.run"]
+                   "asperity.sweeps.run",
+                   "asperity.maugis_dugdale_load", "asperity.cos", "asperity.amontons",
+                   "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -26,9 +28,19 @@ FULL_DOCS = {
     "asperity.multi_asperity": ["contact_fraction", "normal_force", "friction_force", "real_contact_area"],
     "asperity.maugis_dugdale": ["md_radius", "md_load", "md_penetration", "md_curve", "md_t_of_radius"],
     "asperity.maugis_dugdale_branch": ["md_solve", "md_branch_end", "md_pull_off"],
-    "asperity.hertz": ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md"],
-    "asperity.jkr": ["jkr_load", "jkr_penetration", "jkr_pull_off"],
-    "asperity.dmt": ["dmt_load", "dmt_penetration"],
+    "asperity.hertz": ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md", "hertz_contact_radius",
+                       "hertz_normal_force"],
+    "asperity.jkr": ["jkr_load", "jkr_penetration", "jkr_pull_off", "jkr_solve_load", "jkr_solve", "jkr_contact_radius",
+                     "jkr_normal_force", "jkr_pull_off_force"],
+    "asperity.dmt": ["dmt_load", "dmt_penetration", "dmt_solve_load", "dmt_solve", "dmt_contact_radius",
+                     "dmt_normal_force", "dmt_pull_off_force"],
+    "asperity.maugis_dugdale_load": ["md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force"],
+    "asperity.cos": ["cos_contact_radius", "cos_friction", "cos_lambda", "cos_alpha", "cos_pull_off_hat",
+                     "cos_radius_hat"],
+    "asperity.amontons": ["amontons_friction"],
+    "asperity.fit.api": ["fit_friction_load", "fit_force_separation", "fit_pull_off"],
+    "asperity.fit.joint": ["fit_joint"],
+    "asperity.fit.compare": ["compare_models"],
     "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
                               "invert_branch"],
     "asperity.pull_off_search": ["find_pull_off"],

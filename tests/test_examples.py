@@ -7,10 +7,13 @@ import numpy as np
 import pytest
 
 EXAMPLES = pathlib.Path(__file__).parents[1] / "examples"
+EXAMPLE = EXAMPLES / "afm_gold.py"
 
 
-def load_example(name="afm_gold"):
-    spec = importlib.util.spec_from_file_location(name, EXAMPLES / f"{name}.py")
+def load_example(name=EXAMPLE):
+    """An example script as a module, by name (``'afm_cycle'``) or path."""
+    path = name if isinstance(name, pathlib.Path) else EXAMPLES / f"{name}.py"
+    spec = importlib.util.spec_from_file_location(path.stem, path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -128,3 +131,24 @@ def test_sweep_map_example(tmp_path, capsys):
     np.testing.assert_array_equal(ds.mu.values[1, 2], m.load_curve(ds.P.values).mu)
     assert ds.pull_off.values[1, 2] == m.pull_off().force
     ds.close()
+
+
+def test_fit_afm_friction_example(tmp_path, capsys):
+    pytest.importorskip("lmfit")
+    pytest.importorskip("matplotlib")
+    example = load_example(EXAMPLES / "fit_afm_friction.py")
+    gw, ranked = example.main(["--out", str(tmp_path)])
+    assert (tmp_path / "fit_afm_friction.png").read_bytes()[:4] == b"\x89PNG"
+    out = capsys.readouterr().out
+    assert "best single-asperity law" in out and "dAIC" in out
+    # ranked by AIC, every model of the example in it, the rough-surface model among them
+    aics = [r.aic for r in ranked.results]
+    assert aics == sorted(aics) and {r.model for r in ranked.results} == {"gw", "jkr", "dmt", "md", "cos", "amontons"}
+    # the generating work of adhesion lies in the rough-surface fit's 95 % interval
+    maker = load_example(EXAMPLES / "data" / "make_afm_friction.py")
+    lo, hi = gw.parameters["w_J_m2"].ci95
+    assert lo < maker.TRUTH["w_J_m2"] < hi
+    # the shipped data file is exactly what the script beside it writes
+    fresh = maker.main(tmp_path / "regenerated.csv")
+    assert fresh.read_text() == (EXAMPLES / "data" / "afm_friction_synthetic.csv").read_text()
+    assert fresh.read_text().startswith("# SYNTHETIC DATA - not a measurement.")

@@ -9,7 +9,7 @@ import asperity
 
 SUBMODULES = ["jkr", "dmt", "hertz", "maugis_dugdale", "friction_stress", "groups", "heights", "curves",
               "physical", "materials", "multi_asperity", "asperity_law", "quantities", "units", "studies", "cli",
-              "cycle", "physical_cycle", "instrument"]
+              "cycle", "physical_cycle", "instrument", "fit", "cos", "amontons", "maugis_dugdale_load"]
 
 
 def test_public_names_are_the_defining_modules_objects():
@@ -61,3 +61,13 @@ def test_unknown_attribute():
 
 def test_dir_lists_public_names():
     assert set(asperity.__all__) <= set(dir(asperity))
+
+
+def test_fit_import_without_lmfit():
+    # lmfit is imported only when a fit runs; reading data and building models need none of it.
+    code = ("import sys; sys.modules['lmfit'] = None\n"
+            "import asperity.fit as f\n"
+            "d = f.friction_load_data([1.0, 2.0, 3.0], [1.0, 1.5, 2.0])\n"
+            "try:\n    f.fit_friction_load(d, 'amontons')\nexcept ImportError as e:\n    print(e)")
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert res.stdout.strip() == "fitting needs lmfit: pip install 'asperity[fit]'"

@@ -7,16 +7,17 @@ friction stress and Maugis-Dugdale adhesion, after Adams, Müftü and Mohd Azhar
 Layers, each importing only downward:
 
 * single-asperity laws: :mod:`~asperity.friction_stress`, :mod:`~asperity.hertz`,
-  :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`,
-  :mod:`~asperity.jackson_green` and :mod:`~asperity.jackson_green_fits` (elastic-plastic),
-  :mod:`~asperity.nix_gao` (size effect)
+  :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`
+  (:mod:`~asperity.maugis_dugdale_load` under load control), :mod:`~asperity.cos`,
+  :mod:`~asperity.amontons`, :mod:`~asperity.jackson_green` and
+  :mod:`~asperity.jackson_green_fits` (elastic-plastic), :mod:`~asperity.nix_gao` (size effect)
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
   :mod:`~asperity.heights`
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
   :mod:`~asperity.multi_asperity`; the laws by name: :mod:`~asperity.elastic_plastic`
 * curves: :mod:`~asperity.curves`; loading-unloading cycles: :mod:`~asperity.cycle`
-  (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); the paper's figures:
-  :mod:`~asperity.studies`;
+  (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); fitting measured data:
+  :mod:`~asperity.fit`; the paper's figures: :mod:`~asperity.studies`;
   the command line: :mod:`~asperity.cli`; the browser explorer: :mod:`~asperity.explorer`
 
 Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
@@ -68,13 +69,16 @@ _EXPORTS = {
 #: Public submodules reachable as attributes (``asperity.jkr``), imported on first access.
 #: Any other public submodule (one added later) is found the same way.
 _SUBMODULES = (
+    "amontons",
     "asperity_law",
     "cli",
+    "cos",
     "curves",
     "cycle",
     "dmt",
     "elastic_plastic",
     "explorer",
+    "fit",
     "friction_stress",
     "groups",
     "heights",
@@ -85,6 +89,7 @@ _SUBMODULES = (
     "jkr",
     "materials",
     "maugis_dugdale",
+    "maugis_dugdale_load",
     "multi_asperity",
     "instrument",
     "nix_gao",

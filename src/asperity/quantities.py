@@ -17,12 +17,15 @@ A :class:`Quantity` carries
   log axes, log sliders, fitted in log10), a ``typical`` range for sliders and sweeps,
   the ``default`` and the ``source`` (equation of the paper, or reference).
 
-Four registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
+Six registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
 :class:`asperity.Model` and of its per-asperity laws), :data:`PHYSICAL_PARAMETERS` (inputs
 of a physical contact, in SI units), :data:`CURVE_COLUMNS` (the columns of every curve),
 :data:`PLASTIC_COLUMNS` (the column a curve gains when the per-asperity law or the material
-has a critical interference) and :data:`CYCLE_QUANTITIES` (the inputs and results of a
-loading cycle, :mod:`asperity.cycle`).  :func:`quantity` looks a name up in all five.
+has a critical interference), :data:`CYCLE_QUANTITIES` (the inputs and results of a
+loading cycle, :mod:`asperity.cycle`) and :data:`FIT_PARAMETERS` (parameters only the fits
+have: offsets, the COS and Amontons laws).  :func:`quantity` looks a name up in all six.
+A fit names a physical parameter by its SI name (``w_J_m2``, ``R_m``, ``tau_Pa``), a
+dimensionless one by its name (``alpha``).
 """
 
 from __future__ import annotations
@@ -38,6 +41,7 @@ __all__ = [
     "VALIDATION_COLUMNS",
     "PLASTIC_COLUMNS",
     "CYCLE_QUANTITIES",
+    "FIT_PARAMETERS",
     "quantity",
 ]
 
@@ -157,6 +161,28 @@ PHYSICAL_PARAMETERS = _registry(
     Quantity("h_star", "h^*", "Nix-Gao size-effect length (indentation size effect)", unit="m",
              si_name="h_star_m", si_unit="m", lo=0.0, lo_inclusive=True, log=True, typical=(1e-8, 1e-5),
              source="Nix & Gao 1998"),
+    Quantity("tau1", r"\tau_{f1}", "Hurtado-Kim shear strength of small contacts (region 1), tau_f1 G*", unit="Pa",
+             si_name="tau1_Pa", si_unit="Pa", lo=0.0, log=True, typical=(1e6, 1e10), source="Eq 2"),
+    Quantity("tau2", r"\tau_{f2}", "Hurtado-Kim shear strength of large contacts (region 3), tau_f2 G*", unit="Pa",
+             si_name="tau2_Pa", si_unit="Pa", lo=0.0, log=True, typical=(1e4, 1e9), source="Eq 2"),
+    Quantity("sigma0", r"\sigma_0", "Dugdale adhesive stress w/h", unit="Pa", si_name="sigma0_Pa", si_unit="Pa",
+             lo=0.0, log=True, typical=(1e6, 1e11), source="Eq 14"),
+)
+
+#: Parameters of the fits only (:mod:`asperity.fit`): offsets and the empirical friction laws.
+FIT_PARAMETERS = _registry(
+    Quantity("d0", "d_0", "separation offset: the model sees d - d0 (sigma)", unit="sigma", si_name="d0_m",
+             si_unit="m", default=0.0),
+    Quantity("alpha_t", r"\alpha_t", "COS transition parameter, 0 (DMT) to 1 (JKR)", lo=0.0, hi=1.0,
+             lo_inclusive=True, hi_inclusive=True, typical=(0.0, 1.0), source="Carpick et al. 1999, Eq 7"),
+    Quantity("mu0", r"\mu_0", "Amontons friction coefficient of F = mu0 (P + P0)", lo=0.0, log=True,
+             typical=(1e-3, 2.0)),
+    Quantity("P0", "P_0", "Amontons adhesion offset of F = mu0 (P + P0), a load", unit="N G b^2", si_name="P0_N",
+             si_unit="N"),
+    Quantity("F0", "F_0", "COS friction at zero load, tau pi a0^2", unit="N G b^2", si_name="F0_N", si_unit="N",
+             lo=0.0, log=True, source="Carpick et al. 1999"),
+    Quantity("Pc", "P_c", "COS critical load (the pull-off load, negative)", unit="N G b^2", si_name="Pc_N",
+             si_unit="N", hi=0.0, source="Carpick et al. 1999"),
 )
 
 #: Columns of every curve (dimensionless, and SI for a physical contact), in output order.
@@ -282,7 +308,8 @@ def quantity(name: str) -> Quantity:
     ValueError
         For an unknown name; the message lists the known ones.
     """
-    registries = (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS, PLASTIC_COLUMNS, CYCLE_QUANTITIES)
+    registries = (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS, PLASTIC_COLUMNS, CYCLE_QUANTITIES,
+                  FIT_PARAMETERS)
     for registry in registries:
         if name in registry:
             return registry[name]

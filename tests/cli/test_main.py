@@ -56,7 +56,7 @@ def test_every_command_module_is_registered():
     sub = next(a for a in parser._actions if a.dest == "command")
     assert list(sub.choices) == list(COMMANDS)
     assert set(COMMANDS) == {"reproduce", "separation", "load", "pulloff", "cycle", "surface", "materials", "md",
-                             "bem", "explore", "sweep", "plot"}
+                             "bem", "explore", "sweep", "plot", "fit"}
     for name, module in COMMANDS.items():
         assert module.NAME == name and module.HELP and callable(module.add_arguments) and callable(module.run)
 

@@ -2,11 +2,12 @@
 
 ``asperity reproduce`` recomputes the paper's figures and Table 1; ``separation``,
 ``load``, ``pulloff`` and ``md`` compute curves for one's own parameters; ``cycle`` an
-approach-retract cycle (hysteresis, energy dissipated, pull-off); ``surface`` reads a
-measured surface, ``bem`` checks the model against a boundary-element contact of it,
-``materials`` lists the materials table, ``sweep`` runs grids of parameter sets (NetCDF/Zarr,
-on Dask) and ``plot`` draws them as heat maps; ``explore`` serves a live view of the model to
-the browser.  Every error prints one line and exits with status 2.
+approach-retract cycle (hysteresis, energy dissipated, pull-off); ``fit`` fits a model to
+measured data; ``surface`` reads a measured surface, ``bem`` checks the model against a
+boundary-element contact of it, ``materials`` lists the materials table, ``sweep`` runs
+grids of parameter sets (NetCDF/Zarr, on Dask) and ``plot`` draws them as heat maps;
+``explore`` serves a live view of the model to the browser.  Every error prints one line
+and exits with status 2.
 
 One module per command (:data:`COMMANDS`), each with ``NAME``, ``HELP``,
 ``DESCRIPTION`` (and optionally ``EPILOG``), ``add_arguments(parser)`` and ``run(args)``;
@@ -23,14 +24,14 @@ import sys
 
 from .._optional import MissingDependency
 from .._version import __version__
-from . import bem, cycle, explore, load, materials, md, plot, pulloff, reproduce, separation, surface, sweep
+from . import bem, cycle, explore, fit, load, materials, md, plot, pulloff, reproduce, separation, surface, sweep
 from ._args import UNITS, UsageError, join_negative_lists, parse_list
 
 __all__ = ["main", "build_parser", "parse_list", "UsageError", "COMMANDS"]
 
 #: Command name -> its module, in the order ``asperity --help`` lists them.
-COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, cycle, surface, bem, materials,
-                                               md, sweep, plot, explore)}
+COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, cycle, fit, surface, bem,
+                                               materials, md, sweep, plot, explore)}
 
 
 class _Parser(argparse.ArgumentParser):

@@ -369,11 +369,14 @@ def contact_from_args(args):
 
     surface = Surface(quantity(args.sigma, "m", "--sigma"), quantity(args.radius, "m", "--radius"),
                       quantity(args.density, "1/m^2", "--density"), quantity(args.area, "m^2", "--area"))
-    kwargs = {} if args.plastic_threshold is None else {"plastic_threshold": args.plastic_threshold}
-    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion, plasticity=args.law,
-                           hardness=None if args.hardness is None else quantity(args.hardness, "Pa", "--hardness"),
-                           h_star=None if args.h_star is None else quantity(args.h_star, "m", "--h-star"),
-                           size_effect=True if args.size_effect else None, **kwargs)
+    # Commands without the plasticity options (e.g. fit) get the defaults.
+    law, hardness, h_star, size_effect, threshold = (getattr(args, name, None) for name in (
+        "law", "hardness", "h_star", "size_effect", "plastic_threshold"))
+    kwargs = {} if threshold is None else {"plastic_threshold": threshold}
+    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion, plasticity=law,
+                           hardness=None if hardness is None else quantity(hardness, "Pa", "--hardness"),
+                           h_star=None if h_star is None else quantity(h_star, "m", "--h-star"),
+                           size_effect=True if size_effect else None, **kwargs)
 
 
 def title(args) -> str:
