@@ -10,9 +10,11 @@ to use real data.  Needs: pip install 'asperity[all]'.
 
 import argparse
 import pathlib
+import warnings
 
 import numpy as np
 
+from asperity import AsperityWarning
 from asperity.physical import PhysicalContact
 from asperity.topography import analyse_surface
 
@@ -45,11 +47,18 @@ def main(argv=None):
     contact = PhysicalContact("Au", analysis.spectral.surface(args.area))
     print(f"\nN = {contact.N:.3g} asperities, alpha = {contact.alpha:.4g}, beta = {contact.beta:.4g}, "
           f"gamma = {contact.gamma:.4g}, lambda = {contact.lam:.3g}")
+    print(f"plasticity index psi = {contact.plasticity_index:.3g} (gold asperities yield at "
+          f"{contact.critical_interference:.2g} m: expect a note of asperity.PlasticityWarning; see "
+          "examples/plasticity.py)")
 
     # 3. Friction coefficient versus load in newtons, and the pull-off force.
     loads = np.geomspace(1e-4, 10.0, 60)
-    curve = contact.load_curve(loads)
-    dry = PhysicalContact("Au", analysis.spectral.surface(args.area), adhesion=False).load_curve(loads)
+    with warnings.catch_warnings(record=True) as caught:  # the library's validity notes, printed below
+        warnings.simplefilter("always", AsperityWarning)
+        curve = contact.load_curve(loads)
+        dry = PhysicalContact("Au", analysis.spectral.surface(args.area), adhesion=False).load_curve(loads)
+    for message in dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, AsperityWarning)):
+        print(f"note: {message}")
     pull = contact.pull_off()
     if pull.exists:
         print(f"pull-off force {pull.force:.4g} N at separation {pull.d * 1e9:.3g} nm")

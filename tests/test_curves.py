@@ -230,7 +230,7 @@ def test_model_delegates_to_load_control(monkeypatch):
         spy(name)
     m = asperity.Model(0.003, 1000, 1e-3)
     lc = m.load_curve([1.0, 10.0])
-    assert calls == ["start_separation", "bracket_low", "stable_branch", "invert_branch"]
+    assert calls == ["start_separation", "stable_branch", "invert_branch"]  # the Hertz estimate sufficed
     calls.clear()
     po = m.pull_off()  # found on the load curve's grid, cached
     assert calls == [] and po.exists
@@ -238,6 +238,26 @@ def test_model_delegates_to_load_control(monkeypatch):
     branch = load_control.stable_branch(tab, float(lc.d.min()) - 1.0, m.d_search)
     np.testing.assert_allclose(branch.tab.sums(lc.d)[0][:, 1], [1.0, 10.0], rtol=1e-10)
     assert m.pull_off(5.0).exists and calls == ["find_pull_off"]
+
+
+def test_model_steps_down_when_the_start_separation_falls_short(monkeypatch):
+    # A start separation carrying less than the largest load: bracket_low steps down, same curve.
+    from asperity import curves
+
+    loads = [1.0, 1e5]
+    want = asperity.Model(0.003, 1000, 1e-3).load_curve(loads)
+    calls = []
+    real = curves.bracket_low
+
+    def spy(*args):
+        calls.append(args[2])
+        return real(*args)
+    monkeypatch.setattr(curves, "start_separation", lambda *args: -3.0)
+    monkeypatch.setattr(curves, "bracket_low", spy)
+    got = asperity.Model(0.003, 1000, 1e-3).load_curve(loads)
+    assert calls == [-5.0]  # one step below -3, where the force at -3 fell short of 1e5
+    np.testing.assert_allclose(got.d, want.d, rtol=1e-12)
+    np.testing.assert_allclose(got.F, want.F, rtol=1e-10)
 
 
 def test_pull_off_to_dict():

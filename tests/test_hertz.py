@@ -70,3 +70,24 @@ def test_bad_input_names_the_parameter(bad):
                        (lambda: hertz.hertz_load_md(bad), "A"), (lambda: hertz.hertz_penetration_md(bad), "A")):
         with pytest.raises(ValueError, match=f"^{name}"):
             call()
+
+
+def test_physical_shell():
+    import math
+
+    R, E_star = 1e-6, 2e9
+    K = 4 / 3 * E_star
+    P = np.array([0.0, 1e-6, 3e-3])
+    np.testing.assert_allclose(hertz.hertz_contact_radius(P, R=R, E_star=E_star) ** 3, P * R / K, rtol=1e-14)
+    delta = np.array([0.0, 1e-9, 1e-7])
+    np.testing.assert_allclose(hertz.hertz_normal_force(delta, R=R, E_star=E_star), K * math.sqrt(R) * delta**1.5,
+                               rtol=1e-15)
+    # a^2 = R delta links the two (Johnson 1985, Eq 4.22)
+    a = hertz.hertz_contact_radius(hertz.hertz_normal_force(delta, R=R, E_star=E_star), R=R, E_star=E_star)
+    np.testing.assert_allclose(a**2, R * delta, rtol=1e-14)
+    with pytest.raises(ValueError, match="without adhesion"):
+        hertz.hertz_contact_radius([-1e-9], R=R, E_star=E_star)
+    with pytest.raises(ValueError, match="without adhesion"):
+        hertz.hertz_normal_force([-1e-9], R=R, E_star=E_star)
+    with pytest.raises(ValueError, match="^E_star must be > 0"):
+        hertz.hertz_contact_radius([1.0], R=R, E_star=0.0)

@@ -33,6 +33,8 @@ def test_overflow_limit(func, limit):
     assert np.isfinite(func(limit * (1 - 1e-12)))  # and no RuntimeWarning (an error under pytest)
     with pytest.raises(ValueError, match="^A must be <= " + re.escape(f"{limit:.6g}")):
         func([1.0, limit * (1 + 1e-12)])
+    with pytest.raises(ValueError, match="^A must be <= "):  # 8A/3 overflows too: inf - inf, no warning
+        func(2.25e307)
 
 
 @pytest.mark.parametrize("bad", [None, True, 1j, {}, "2", np.ma.masked_array([1.0], mask=[True]), -1.0, np.nan],
@@ -41,3 +43,89 @@ def test_bad_input(bad):
     for func in (jkr.jkr_load, jkr.jkr_penetration):
         with pytest.raises(ValueError, match="^A"):
             func(bad)
+
+
+# -- load control, displacement control, the physical shell ---------------------------------
+import math  # noqa: E402
+
+from asperity import hertz  # noqa: E402
+
+
+def test_solve_load_inverts_the_load():
+    A = np.geomspace(1.5 ** (1 / 3), 1e60, 300)
+    A2, D2 = jkr.jkr_solve_load(jkr.jkr_load(A))
+    np.testing.assert_allclose(A2, A, rtol=1e-13)
+    np.testing.assert_allclose(D2, jkr.jkr_penetration(A), rtol=1e-12, atol=1e-14)
+    assert jkr.jkr_solve_load([-1.5])[0][0] ** 3 == pytest.approx(1.5, rel=1e-15)
+    with pytest.raises(ValueError, match=r"^P \(load over pi w R\) must lie in \[-1.5"):
+        jkr.jkr_solve_load([-1.5 - 1e-12])
+
+
+def test_solve_inverts_the_penetration_on_the_stable_branch():
+    A_c = 6 ** (-1 / 3)
+    A = np.concatenate([A_c * (1 + np.geomspace(1e-6, 1.0, 20)), np.geomspace(2 * A_c, 1e40, 100)])
+    A2, P2 = jkr.jkr_solve(jkr.jkr_penetration(A))
+    np.testing.assert_allclose(A2, A, rtol=1e-9)  # ill-conditioned only right at the branch end
+    np.testing.assert_allclose(P2, jkr.jkr_load(A), rtol=1e-9, atol=1e-9)
+    A_end, P_end = jkr.jkr_solve([jkr.jkr_penetration(A_c)])
+    assert P_end[0] == pytest.approx(-5 / 6, rel=1e-7)  # displacement-controlled pull-off
+    with pytest.raises(ValueError, match=r"^delta \(penetration\) must lie in"):
+        jkr.jkr_solve([-0.91])
+
+
+R, W, E_STAR = 20e-9, 0.3, 1e11
+
+
+def test_contact_radius_is_jkr_equation_2():
+    K = 4 / 3 * E_STAR
+    P = np.array([-1.5 * math.pi * W * R, -1e-9, 0.0, 1e-8, 1e-6])
+    a = jkr.jkr_contact_radius(P, R=R, w=W, E_star=E_STAR)
+    Q = 3 * math.pi * W * R
+    np.testing.assert_allclose(a**3, R / K * (P + Q + np.sqrt(2 * Q * P + Q * Q)), rtol=1e-13)
+    # the same in Maugis' units
+    A = jkr.jkr_solve_load(P / (math.pi * W * R))[0]
+    np.testing.assert_allclose(a, A * (math.pi * W * R**2 / K) ** (1 / 3), rtol=1e-13)
+
+
+def test_pull_off_load_is_minus_three_halves_pi_w_R():
+    F = jkr.jkr_pull_off_force(R=R, w=W)
+    assert F == pytest.approx(1.5 * math.pi * W * R, rel=1e-15)
+    # the load-controlled branch ends exactly there: the smallest load with a radius
+    A = np.linspace(0.5, 3.0, 20001)
+    assert np.min(jkr.jkr_load(A)) * math.pi * W * R == pytest.approx(-F, rel=1e-7)
+    assert np.isfinite(jkr.jkr_contact_radius(-F, R=R, w=W, E_star=E_STAR))
+    with pytest.raises(ValueError, match="JKR pull-off load"):
+        jkr.jkr_contact_radius(-F * (1 + 1e-9), R=R, w=W, E_star=E_STAR)
+
+
+@pytest.mark.parametrize("w", [1e-3, 1e-6, 1e-9, 0.0])
+def test_tends_to_hertz_as_w_vanishes(w):
+    P = np.geomspace(1e-9, 1e-5, 7)
+    a = jkr.jkr_contact_radius(P, R=R, w=w, E_star=E_STAR)
+    a_h = hertz.hertz_contact_radius(P, R=R, E_star=E_STAR)
+    # a^3 = a_H^3 (1 + 3x + sqrt(6x + 9x^2)), x = pi w R / P: the gap closes like sqrt(w)
+    x = math.pi * w * R / P
+    np.testing.assert_allclose(a / a_h, np.cbrt(1 + 3 * x + np.sqrt(6 * x + 9 * x * x)), rtol=1e-12)
+    assert np.max(np.abs(a / a_h - 1)) <= 2 * math.sqrt(6 * math.pi * w * R / 1e-9) / 3 + 1e-15
+    delta = np.linspace(0.0, 1e-9, 5)
+    F = jkr.jkr_normal_force(delta, R=R, w=w, E_star=E_STAR)
+    np.testing.assert_allclose(F, hertz.hertz_normal_force(delta, R=R, E_star=E_STAR),
+                               atol=4 * math.pi * w * R + 1e-300 if w else 0.0)
+
+
+def test_normal_force_is_the_stable_branch():
+    K = 4 / 3 * E_STAR
+    scale = (math.pi**2 * W**2 * R / K**2) ** (1 / 3)
+    D = np.array([-0.9, -0.5, 0.0, 1.0, 10.0])
+    F = jkr.jkr_normal_force(D * scale, R=R, w=W, E_star=E_STAR)
+    np.testing.assert_allclose(F, jkr.jkr_solve(D)[1] * math.pi * W * R, rtol=1e-9)
+    with pytest.raises(ValueError, match="penetration"):
+        jkr.jkr_normal_force([-0.95 * scale], R=R, w=W, E_star=E_STAR)
+
+
+@pytest.mark.parametrize("kwargs, match", [({"R": 0.0, "w": W, "E_star": E_STAR}, "^R must be > 0"),
+                                           ({"R": R, "w": -1.0, "E_star": E_STAR}, "^w must be >= 0"),
+                                           ({"R": R, "w": W, "E_star": True}, "^E_star must be a real")])
+def test_bad_physical_input(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        jkr.jkr_contact_radius([0.0], **kwargs)

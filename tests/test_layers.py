@@ -25,20 +25,24 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "asperity"
 #: (cycle, surface, regimes, fit, sweeps, validation, explorer) are placed as the style guide
 #: places them.
 LAYERS = [
-    ("base", {"_validation", "_csv", "_optional", "_version", "_atomic", "_json", "units", "quadrature",
+    ("base", {"_validation", "_csv", "_optional", "_version", "_atomic", "_json", "_warnings", "units", "quadrature",
               "quantities"}),
-    ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch"}),
+    ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch",
+                              "jackson_green", "jackson_green_fits", "nix_gao", "maugis_dugdale_load", "cos",
+                              "amontons"}),
     ("statistics, groups", {"groups", "heights"}),
-    ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
-    ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),
-    ("physical", {"materials", "bodies", "physical", "physical_results", "surface", "regimes", "topography"}),
-    ("applications", {"fit", "sweeps", "validation"}),
+    ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
+    ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search", "cycle_run",
+                "cycle_result", "instrument", "interaction"}),
+    ("physical", {"materials", "bodies", "physical", "physical_results", "surface", "regimes", "topography",
+                  "plasticity", "physical_cycle"}),
+    ("applications", {"fit", "sweeps", "validation", "cycle_plot"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]
 #: The independent slow path: imports nothing else from asperity, and nothing imports it.
 ORACLE = "reference"
 #: Private base modules meant to be imported by every module.
-SHARED_PRIVATE = {"_validation", "_csv", "_optional", "_version", "_atomic", "_json"}
+SHARED_PRIVATE = {"_validation", "_csv", "_optional", "_version", "_atomic", "_json", "_warnings"}
 
 RANK = {name: i for i, (_, names) in enumerate(LAYERS) for name in names}
 

@@ -63,7 +63,8 @@ def test_force_grid_derivative_is_the_slope():
     fd = (force(tab, grid + h) - force(tab, grid - h)) / (2 * h)
     np.testing.assert_allclose(dP, fd, rtol=1e-6, atol=1e-6 * np.abs(P).max())
     np.testing.assert_allclose(P, force(tab, grid), rtol=0)
-    assert force_grid(tab, -2.0, 4.0)[0].size == 120  # one point per 0.05 sigma
+    assert force_grid(tab, -3.0, 10.0)[0].size == 86  # one point per 0.15 sigma
+    assert force_grid(tab, -2.0, 4.0)[0].size == 40  # at least 40
     with pytest.raises(ValueError, match=r"n must lie in \[2, 1000000\]"):
         force_grid(tab, -2.0, 4.0, n=1)
     for bad in (2.5, True, "3"):

@@ -25,7 +25,8 @@ u = pint.UnitRegistry()
 
 # -- the materials table ---------------------------------------------------------------------
 
-NUMERIC = ["E_Pa", "nu", "G_Pa", "lattice_constant_m", "b_m", "surface_energy_J_m2", "work_of_adhesion_J_m2"]
+NUMERIC = ["E_Pa", "nu", "G_Pa", "lattice_constant_m", "b_m", "surface_energy_J_m2", "work_of_adhesion_J_m2",
+           "hardness_Pa", "ise_H0_Pa", "ise_h_star_m"]
 
 
 def _source_keys(sources):

@@ -235,3 +235,15 @@ def test_bad_types_name_the_parameter(bad):
 def test_derivatives_flag_must_be_a_bool():
     with pytest.raises(TypeError, match="derivatives"):
         md.md_curve(1.0, 1.0, derivatives="yes")
+
+
+def test_t_of_radius_on_floats_equals_the_array_path():
+    # A few radii (the friction breakpoints) take a Python-float path; it must agree with the arrays'.
+    rng = np.random.default_rng(7)
+    for _ in range(300):
+        lam = 10 ** rng.uniform(-12, 12)
+        A = 10 ** rng.uniform(-6, 30)
+        one = md.md_t_of_radius([A], lam)[0]
+        many = md.md_t_of_radius(np.full(6, A), lam)[0]
+        assert one == pytest.approx(many, rel=1e-13)
+        assert float(md.md_radius(one, lam)) == pytest.approx(A, rel=1e-12)

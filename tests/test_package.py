@@ -8,25 +8,30 @@ import pytest
 import asperity
 
 SUBMODULES = ["jkr", "dmt", "hertz", "maugis_dugdale", "friction_stress", "groups", "heights", "curves",
-              "physical", "materials", "multi_asperity", "asperity_law", "quantities", "units", "studies", "cli"]
+              "physical", "materials", "multi_asperity", "asperity_law", "quantities", "units", "studies", "cli",
+              "cycle", "physical_cycle", "instrument", "fit", "cos", "amontons", "maugis_dugdale_load"]
 
 
 def test_public_names_are_the_defining_modules_objects():
     import asperity.curves
+    import asperity.cycle
+    import asperity.elastic_plastic
     import asperity.friction_stress
     import asperity.heights
     import asperity.maugis_dugdale
     import asperity.multi_asperity
     import asperity.physical_results
+    import asperity.plasticity
+    import asperity.sweeps
 
     for name in asperity.__all__:
         value = getattr(asperity, name)
         if name == "__version__":
             assert value == asperity._version.__version__
             continue
-        homes = [m for m in (asperity.curves, asperity.friction_stress, asperity.heights,
-                             asperity.maugis_dugdale, asperity.multi_asperity, asperity.physical_results)
-                 if hasattr(m, name)]
+        homes = [m for m in (asperity.curves, asperity.cycle, asperity.friction_stress, asperity.heights,
+                             asperity.maugis_dugdale, asperity.multi_asperity, asperity.elastic_plastic,
+                             asperity.plasticity, asperity.sweeps, asperity.physical_results) if hasattr(m, name)]
         assert homes and getattr(homes[0], name) is value, name
 
 
@@ -57,3 +62,13 @@ def test_unknown_attribute():
 
 def test_dir_lists_public_names():
     assert set(asperity.__all__) <= set(dir(asperity))
+
+
+def test_fit_import_without_lmfit():
+    # lmfit is imported only when a fit runs; reading data and building models need none of it.
+    code = ("import sys; sys.modules['lmfit'] = None\n"
+            "import asperity.fit as f\n"
+            "d = f.friction_load_data([1.0, 2.0, 3.0], [1.0, 1.5, 2.0])\n"
+            "try:\n    f.fit_friction_load(d, 'amontons')\nexcept ImportError as e:\n    print(e)")
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert res.stdout.strip() == "fitting needs lmfit: pip install 'asperity[fit]'"

@@ -24,6 +24,10 @@ from asperity.surface import Surface, surface_from_groups
 
 u = pint.UnitRegistry()
 
+#: Gold asperities of these surfaces yield (plasticity index psi = 23): the elastic model
+#: warns (asperity.PlasticityWarning).  The warning itself is tested in tests/test_plasticity.py.
+pytestmark = pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
+
 SIGMA, RADIUS, ETA, AREA = 2e-9, 1e-6, 1e12, 1e-6  # the hand-calculation surface
 
 
@@ -293,3 +297,20 @@ def test_gold_on_gold_pulls_off_harder(surface):
     # Two bodies halve E* (and G*): a more compliant contact sticks more.  The docs quote the ratio.
     one, two = PhysicalContact("Au", surface).pull_off(), PhysicalContact("Au/Au", surface).pull_off()
     assert 1.5 < two.force / one.force < 1.8
+
+
+def test_validity_warnings_above_ten_percent_of_the_nominal_area():
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), plastic_threshold=1.0)  # no yield note
+    with pytest.warns(physical.AreaFractionWarning, match="above 10 % from P = 1000 N") as record:
+        curve = contact.load_curve([1.0, 1e3, 3e3])
+    assert len(record) == 1 and str(record[0].message) == curve.validity_warnings()[0]
+    fraction = curve.area / 1e-6  # real over nominal area, from the columns
+    assert fraction[0] < 0.1 < fraction[1] < fraction[2]
+    (message,) = curve.validity_warnings()
+    assert f"{100 * fraction[2]:.3g} %" in message and "from P = 1000 N" in message
+    assert physical.AREA_FRACTION_CAUTION == 0.1
+    assert contact.load_curve([1.0, 10.0]).validity_warnings() == []
+    assert curve.validity_warnings(limit=0.99) == []
+    assert len(curve.validity_warnings(limit=fraction[0] / 2)) == 1
+    with pytest.raises(ValueError, match="limit"):
+        curve.validity_warnings(limit=-0.1)

@@ -16,6 +16,10 @@ from asperity.physical_results import (
 )
 from asperity.surface import Surface
 
+#: Gold asperities of these surfaces yield (plasticity index psi ~ 23): the elastic model
+#: warns (asperity.PlasticityWarning), tested in tests/test_plasticity.py, not here.
+pytestmark = pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
+
 #: A dense gold surface: N = 2e7 summits on 1 mm^2, whose real contact area grows past the
 #: nominal one under large loads.
 DENSE = Surface(5e-9, 0.8e-6, 2e13, 1e-6)
@@ -23,12 +27,13 @@ DENSE = Surface(5e-9, 0.8e-6, 2e13, 1e-6)
 
 @pytest.fixture(scope="module")
 def dense():
-    return PhysicalContact("Au", DENSE)
+    return PhysicalContact("Au", DENSE, plastic_threshold=1.0)  # no yield note: only the area warns
 
 
 def test_thresholds_and_category():
     assert (AREA_FRACTION_CAUTION, AREA_FRACTION_LIMIT) == (0.1, 1.0)
     assert issubclass(AreaFractionWarning, UserWarning) and asperity.AreaFractionWarning is AreaFractionWarning
+    assert issubclass(AreaFractionWarning, asperity.AsperityWarning)  # one filter, one note mechanism
 
 
 def test_small_area_fraction_gives_no_warning(dense):
@@ -45,9 +50,11 @@ def test_caution_level_warns_once(dense):
     fraction = probe.area / DENSE.area  # independent of the property under test
     inside = probe.P[(fraction > 0.1) & (fraction < 1.0)]
     assert inside.size >= 2
-    with pytest.warns(AreaFractionWarning, match=r"of the nominal area \(more than 10%\)") as record:
+    with pytest.warns(AreaFractionWarning, match=r"of the nominal area \(above 10 % from P = ") as record:
         curve = dense.load_curve(inside)
     assert len(record) == 1  # once per call, not once per point
+    assert f"from P = {inside.min():.4g} N" in str(record[0].message)  # all of them pass 10 %
+    assert str(record[0].message) == curve.validity_warnings()[0]
     assert curve.area_fraction_high and not curve.exceeds_nominal_area
     assert curve.max_area_fraction == pytest.approx(np.max(curve.area) / DENSE.area, rel=1e-15)
 

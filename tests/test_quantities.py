@@ -7,13 +7,15 @@ import pytest
 from asperity import quantities
 from asperity.curves import COLUMNS, CurveResult
 from asperity.physical import PHYSICAL_COLUMNS, PhysicalCurve
-from asperity.quantities import CURVE_COLUMNS, MODEL_PARAMETERS, quantity
+from asperity.quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PLASTIC_COLUMNS, quantity
 
 
 def test_curve_columns_are_the_result_fields():
     assert list(COLUMNS) == list(CURVE_COLUMNS)
-    fields = [f for f in CurveResult.__dataclass_fields__ if f != "parameters"]
+    fields = [f for f in CurveResult.__dataclass_fields__ if f not in ("parameters", *PLASTIC_COLUMNS)]
     assert fields == list(CURVE_COLUMNS)
+    assert all(name in CurveResult.__dataclass_fields__ for name in PLASTIC_COLUMNS)
+    assert all(name in PhysicalCurve.__dataclass_fields__ for name in PLASTIC_COLUMNS)
     assert all(name in PhysicalCurve.__dataclass_fields__ for name in PHYSICAL_COLUMNS)
     assert [col for col, _, _ in PHYSICAL_COLUMNS.values()] == ["d_m", "P_N", "F_N", "mu", "area_m2",
                                                                "pressure_Pa", "contacts"]
@@ -61,3 +63,15 @@ def test_typical_ranges_inside_valid_ranges():
 def test_unknown_quantity_lists_names():
     with pytest.raises(ValueError, match="unknown quantity 'zeta'.*alpha"):
         quantity("zeta")
+
+
+def test_fit_parameters_registry():
+    from asperity.quantities import FIT_PARAMETERS, PHYSICAL_PARAMETERS
+
+    assert quantity("alpha_t") is FIT_PARAMETERS["alpha_t"] and quantity("alpha_t").contains(1.0)
+    assert not quantity("alpha_t").contains(1.01) and not quantity("Pc").contains(0.0)
+    assert quantity("Pc").contains(-1.0) and quantity("P0").si_name == "P0_N"
+    for name, si in (("tau1", "tau1_Pa"), ("tau2", "tau2_Pa"), ("sigma0", "sigma0_Pa"), ("tau", "tau_Pa")):
+        assert PHYSICAL_PARAMETERS[name].si_name == si and PHYSICAL_PARAMETERS[name].log
+    names = [q.si_name or q.name for reg in (FIT_PARAMETERS, PHYSICAL_PARAMETERS) for q in reg.values()]
+    assert len(names) == len(set(names))

@@ -5,12 +5,16 @@ far as the README is concerned), with the virtual environment's ``bin`` first on
 so ``asperity`` and ``python`` are the environment's, as after ``source
 .venv/bin/activate``.  Skipped, with the reason: the set-up lines (``python3 -m venv``,
 ``pip install``, which need the network and build the environment these tests run in) and
-``source .venv/bin/activate`` itself.  Python blocks run with warnings turned into errors.
+``source .venv/bin/activate`` itself, and the lines of :data:`NOT_RUN` (a placeholder
+for a cluster).  ``asperity explore`` serves until Ctrl-C: it runs with ``--no-browser
+--port 0``, and is stopped with SIGINT once it has printed its address.  Python blocks run
+with warnings turned into errors.
 """
 
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -22,6 +26,8 @@ README = ROOT / "README.md"
 
 #: Lines not run, by what they start with or contain: set-up (network) and activation.
 SETUP = ("python3 -m venv", "pip install", ".venv/bin/pip", "source .venv/bin/activate")
+#: Lines not run, with the reason.
+NOT_RUN = {"--scheduler tcp://HOST": "a placeholder for one's own Dask cluster ('...' for the options)"}
 
 
 def blocks() -> list[tuple[str, str]]:
@@ -35,9 +41,9 @@ def steps() -> list[tuple[str, str]]:
     out = []
     for lang, text in blocks():
         if lang == "bash":
-            for line in text.splitlines():
+            for line in re.sub(r"\\\n\s*", " ", text).splitlines():  # continuation lines joined
                 command = line.strip()
-                if command and not command.startswith("#") and not any(s in command for s in SETUP):
+                if command and not command.startswith("#") and not any(s in command for s in (*SETUP, *NOT_RUN)):
                     out.append(("bash", command))
         elif lang == "python":
             out.append(("python", text))
@@ -83,12 +89,31 @@ def workdir(tmp_path_factory):
     return path
 
 
+def _explore(text: str, workdir, env) -> subprocess.CompletedProcess:
+    """Run the README's ``asperity explore`` line without a browser on a free port; stop it with SIGINT."""
+    pytest.importorskip("bokeh")
+    argv = text.split("#", 1)[0].split() + ["--no-browser", "--port", "0"]
+    proc = subprocess.Popen(argv, cwd=workdir, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        first = proc.stdout.readline()  # 'asperity explore: serving http://127.0.0.1:PORT/ (Ctrl-C to stop)'
+        assert "serving http://127.0.0.1:" in first, first
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    return subprocess.CompletedProcess(argv, proc.returncode, first + out, err)
+
+
 def test_every_readme_step_runs(workdir):
     env = {**os.environ, "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ.get('PATH', '')}",
            "MPLBACKEND": "Agg"}
     env.pop("PYTHONPATH", None)
     for kind, text in steps():
-        if kind == "bash":
+        if kind == "bash" and text.startswith("asperity explore"):
+            proc = _explore(text, workdir, env)
+        elif kind == "bash":
             proc = subprocess.run(text, shell=True, cwd=workdir, env=env, capture_output=True, text=True, timeout=600)
         else:
             proc = subprocess.run([sys.executable, "-W", "error", "-c", text], cwd=workdir, env=env,

@@ -10,12 +10,17 @@ Layers, each importing only downward:
 
 * single-asperity laws: :mod:`~asperity.friction_stress`, :mod:`~asperity.hertz`,
   :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`
+  (:mod:`~asperity.maugis_dugdale_load` under load control), :mod:`~asperity.cos`,
+  :mod:`~asperity.amontons`, :mod:`~asperity.jackson_green` and
+  :mod:`~asperity.jackson_green_fits` (elastic-plastic), :mod:`~asperity.nix_gao` (size effect)
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
   :mod:`~asperity.heights`
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
-  :mod:`~asperity.multi_asperity`
-* curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
-  the command line: :mod:`~asperity.cli`
+  :mod:`~asperity.multi_asperity`; the laws by name: :mod:`~asperity.elastic_plastic`
+* curves: :mod:`~asperity.curves`; loading-unloading cycles: :mod:`~asperity.cycle`
+  (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); fitting measured data:
+  :mod:`~asperity.fit`; the paper's figures: :mod:`~asperity.studies`;
+  the command line: :mod:`~asperity.cli`; the browser explorer: :mod:`~asperity.explorer`
 
 Everything is imported lazily (PEP 562): ``import asperity`` loads only the version, and
 the first use of a name below (``asperity.load_curve``) or of a submodule
@@ -39,7 +44,15 @@ _EXPORTS = {
     "pull_off": "curves",
     "separation_curve": "curves",
     "AreaFractionWarning": "physical_results",
+    "CycleResult": "cycle",
+    "PreloadCurve": "cycle",
+    "preload_curve": "cycle",
     "ConstantShear": "friction_stress",
+    "Elastic": "elastic_plastic",
+    "JacksonGreen": "elastic_plastic",
+    "LAWS": "elastic_plastic",
+    "PlasticityWarning": "plasticity",
+    "AsperityWarning": "_warnings",
     "HurtadoKim": "friction_stress",
     "GAUSSIAN": "heights",
     "Gaussian": "heights",
@@ -53,34 +66,51 @@ _EXPORTS = {
     "mean_pressure": "multi_asperity",
     "normal_force": "multi_asperity",
     "real_contact_area": "multi_asperity",
+    "sweep": "sweeps",
 }
 
 #: Public submodules reachable as attributes (``asperity.jkr``), imported on first access.
 #: Any other public submodule (one added later) is found the same way.
 _SUBMODULES = (
+    "amontons",
     "asperity_law",
     "bodies",
     "cli",
+    "cos",
     "curves",
+    "cycle",
     "dmt",
+    "elastic_plastic",
+    "explorer",
+    "fit",
     "friction_stress",
     "groups",
     "heights",
     "hertz",
+    "interaction",
+    "jackson_green",
+    "jackson_green_fits",
     "jkr",
     "materials",
     "maugis_dugdale",
+    "maugis_dugdale_load",
     "multi_asperity",
+    "instrument",
+    "nix_gao",
     "physical",
+    "physical_cycle",
     "physical_results",
+    "plasticity",
     "quadrature",
     "quantities",
     "reference",
     "regimes",
     "studies",
     "surface",
+    "sweeps",
     "topography",
     "units",
+    "validation",
 )
 
 __all__ = [
@@ -92,7 +122,15 @@ __all__ = [
     "pull_off",
     "separation_curve",
     "AreaFractionWarning",
+    "CycleResult",
+    "PreloadCurve",
+    "preload_curve",
     "ConstantShear",
+    "Elastic",
+    "JacksonGreen",
+    "LAWS",
+    "PlasticityWarning",
+    "AsperityWarning",
     "HurtadoKim",
     "GAUSSIAN",
     "Gaussian",
@@ -106,6 +144,7 @@ __all__ = [
     "mean_pressure",
     "normal_force",
     "real_contact_area",
+    "sweep",
 ]
 
 

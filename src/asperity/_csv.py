@@ -78,12 +78,14 @@ def rows_to_csv(rows: Sequence[dict], columns: Sequence[str] | None = None, path
 
 
 def columns_to_csv(columns: dict[str, np.ndarray], path_or_buffer=None) -> str | None:
-    """Write named equal-length columns as CSV (header, then rows; every cell a float).
+    """Write named equal-length columns as CSV (header, then rows).
 
-    Returns the text when ``path_or_buffer`` is None, else writes it to the buffer or,
-    atomically, to the path and returns None.
+    Numeric columns are written as floats; text and boolean columns (a cycle's ``branch`` and
+    ``jump``) as they are.  Returns the text when ``path_or_buffer`` is None, else writes it to
+    the buffer or, atomically, to the path and returns None.
     """
-    arrays = [np.asarray(v, dtype=float) for v in columns.values()]
+    arrays = [np.asarray(v) for v in columns.values()]
+    arrays = [a if a.dtype.kind in "USOb" else a.astype(float) for a in arrays]
     text = table_to_csv(list(columns), zip(*arrays, strict=True))
     return _deliver(text, path_or_buffer)
 

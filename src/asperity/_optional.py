@@ -26,15 +26,16 @@ EXTRAS = {
     "pint": "units",
     "mpmath": "reference",
     "SurfaceTopography": "topography",
+    "ContactMechanics": "bem",
     "lmfit": "fit",
     "xarray": "sweep",
     "dask": "sweep",
     "distributed": "sweep",
     "zarr": "sweep",
     "h5netcdf": "sweep",
+    "netCDF4": "sweep",
     "tqdm": "sweep",
     "bokeh": "explore",
-    "ContactMechanics": "bem",
 }
 
 

@@ -23,6 +23,7 @@ __all__ = [
     "check_positive",
     "check_radius",
     "check_range",
+    "check_interval",
     "check_scalar_poisson",
     "check_scalar_positive",
     "check_optional_positive",
@@ -45,6 +46,13 @@ def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray
     None, booleans (also inside lists), complex numbers, masked values, strings, dates,
     dicts and ragged lists raise :class:`ValueError` naming ``name``.
     """
+    # Fast paths for what the library passes itself (a float, a float64 array): a copy, as below.
+    if type(value) is float or type(value) is np.float64:
+        if value - value == 0.0:  # finite
+            return np.array(value)
+    elif type(value) is np.ndarray and value.dtype == np.float64 and (value.size or allow_empty):
+        if np.isfinite(value).all():
+            return value.copy()
     _reject_non_real(value, name)
     if isinstance(value, bool | np.bool_) or _holds_bool(value):
         raise ValueError(f"{name} must be a real number, got a boolean {value!r}")
@@ -83,7 +91,7 @@ def _holds_bool(value) -> bool:
 def check_positive(value, name: str) -> np.ndarray:
     """``value`` as a float array; every element must satisfy 0 < value < inf."""
     arr = as_float_array(value, name)
-    if np.any(arr <= 0):
+    if (arr <= 0).any():
         raise ValueError(f"{name} must be > 0 (valid range 0 < {name} < inf), got {value!r}")
     return arr
 
@@ -91,7 +99,7 @@ def check_positive(value, name: str) -> np.ndarray:
 def check_nonnegative(value, name: str) -> np.ndarray:
     """``value`` as a float array; every element must satisfy 0 <= value < inf."""
     arr = as_float_array(value, name)
-    if np.any(arr < 0):
+    if (arr < 0).any():
         raise ValueError(f"{name} must be >= 0 (valid range 0 <= {name} < inf), got {value!r}")
     return arr
 
@@ -99,15 +107,31 @@ def check_nonnegative(value, name: str) -> np.ndarray:
 def check_range(value, name: str, lo: float, hi: float) -> np.ndarray:
     """``value`` as a float array; every element must satisfy lo <= value <= hi."""
     arr = as_float_array(value, name)
-    if np.any((arr < lo) | (arr > hi)):
+    if ((arr < lo) | (arr > hi)).any():
         raise ValueError(f"{name} must lie in [{lo:g}, {hi:g}], got {value!r}")
+    return arr
+
+
+def check_interval(value, name: str, lo: float, hi: float, *, lo_open: bool = False, hi_open: bool = False,
+                   context: str = "") -> np.ndarray:
+    """``value`` as a float array; every element in the interval from ``lo`` to ``hi``.
+
+    The ends are included unless ``lo_open``/``hi_open``; the message reads
+    ``"{name} must lie in [lo, hi){context}, got ..."``.
+    """
+    arr = as_float_array(value, name)
+    below = arr <= lo if lo_open else arr < lo
+    above = arr >= hi if hi_open else arr > hi
+    if np.any(below | above):
+        left, right = "(" if lo_open else "[", ")" if hi_open else "]"
+        raise ValueError(f"{name} must lie in {left}{lo:g}, {hi:g}{right}{context}, got {value!r}")
     return arr
 
 
 def check_poisson(nu) -> np.ndarray:
     """Poisson's ratio of an isotropic elastic solid: -1 < nu < 0.5."""
     arr = as_float_array(nu, "nu")
-    if np.any((arr <= -1.0) | (arr >= 0.5)):
+    if ((arr <= -1.0) | (arr >= 0.5)).any():
         raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 0.5), got {nu!r}")
     return arr
 
@@ -115,7 +139,7 @@ def check_poisson(nu) -> np.ndarray:
 def check_radius(A, name: str = "A") -> np.ndarray:
     """A contact radius (array, may be empty): finite and >= 0."""
     arr = as_float_array(A, name, allow_empty=True)
-    if np.any(arr < 0):
+    if (arr < 0).any():
         raise ValueError(f"{name} (contact radius) must be >= 0")
     return arr
 
@@ -338,7 +362,7 @@ def check_overflow(result, name: str, limit, value):
     under ``np.errstate(over="ignore", invalid="ignore")`` so no warning precedes the error.
     """
     bad = ~np.isfinite(np.asarray(result))
-    if np.any(bad):
+    if bad.any():
         if callable(limit):
             with np.errstate(all="ignore"):
                 limit = limit()

@@ -26,7 +26,7 @@ import numpy as np
 
 from . import groups
 from ._validation import as_float_array, check_scalar_poisson, check_scalar_positive
-from .friction_stress import FrictionLaw, HurtadoKim
+from .friction_stress import ConstantShear, FrictionLaw, HurtadoKim
 from .hertz import hertz_force, hertz_radius
 from .maugis_dugdale import A_MAX, LAMBDA_RANGE, md_branch_end, md_curve, md_solve, md_t_of_radius
 
@@ -66,7 +66,7 @@ class ModelParameters:
             value = check_scalar_positive(getattr(self, name), name, allow_zero=name == "gamma")
             object.__setattr__(self, name, value)
         object.__setattr__(self, "nu", check_scalar_poisson(self.nu))
-        if not isinstance(self.friction, FrictionLaw):
+        if not isinstance(self.friction, HurtadoKim | ConstantShear | FrictionLaw):  # the protocol check last: slow
             raise TypeError("friction must provide stress(a_bar) and breakpoints() "
                             "(e.g. HurtadoKim() or ConstantShear(tau))")
 
@@ -80,13 +80,14 @@ U_END_LIMIT = 1.0e4
 
 
 def _check_scales(p: ModelParameters):
-    """Reject parameter sets whose scales overflow or leave the Maugis-Dugdale range."""
+    """Reject parameter sets whose scales overflow or leave the Maugis-Dugdale range; return
+    (lambda, delta_hat, P_hat, A_hat) with adhesion, None without."""
     log_ab2 = np.log10(p.alpha) + 2.0 * np.log10(p.beta)
     if not (-250.0 < log_ab2 < 250.0 and -100.0 < np.log10(p.beta) < 100.0 and p.alpha < 1e100):
         raise ValueError(f"alpha={p.alpha:g}, beta={p.beta:g} put the force scale alpha*beta^2 beyond double "
                          "precision; use physical values (alpha and beta between 1e-100 and 1e100)")
     if not p.adhesive:
-        return
+        return None
     lam = groups.maugis_lambda(p.alpha, p.beta, p.gamma, p.h_over_b)
     scales = (lam, groups.penetration_scale(p.alpha, p.beta, p.gamma), groups.load_scale(
         p.alpha, p.beta, p.gamma, p.nu), groups.radius_scale(p.alpha, p.beta, p.gamma))
@@ -96,6 +97,7 @@ def _check_scales(p: ModelParameters):
                          f"Maugis parameter lambda = {float(lam):.3g} (Eq 15) outside [{lo:g}, {hi:g}]; "
                          + ("adhesion this weak is negligible: use gamma = 0" if lam < lo
                             else "check gamma and h_over_b (h is an atomic distance)"))
+    return tuple(float(x) for x in scales)
 
 
 def check_parameters(params, name: str = "params") -> ModelParameters:
@@ -191,7 +193,7 @@ def check_law(law, params: ModelParameters):
     check_parameters(params)
     if law is None:
         return AsperityLaw(params)
-    if not isinstance(law, ContactLaw):
+    if not isinstance(law, AsperityLaw | ContactLaw):  # the first is quick, the protocol check slow
         raise ValueError("law must be a ContactLaw: it provides params, u_end, scale, breakpoints, "
                          f"evaluate(u_bar) and friction(a_bar) (e.g. AsperityLaw(params)), got {type(law).__name__}")
     if law.params != params:
@@ -229,12 +231,9 @@ class AsperityLaw:
 
     def __init__(self, params: ModelParameters):
         self.params = p = check_parameters(params)
-        _check_scales(p)
+        scales = _check_scales(p)
         if p.adhesive:
-            self.lam = float(groups.maugis_lambda(p.alpha, p.beta, p.gamma, p.h_over_b))
-            self.delta_hat = float(groups.penetration_scale(p.alpha, p.beta, p.gamma))
-            self.P_hat = float(groups.load_scale(p.alpha, p.beta, p.gamma, p.nu))
-            self.A_hat = float(groups.radius_scale(p.alpha, p.beta, p.gamma))
+            self.lam, self.delta_hat, self.P_hat, self.A_hat = scales
             self.end = md_branch_end(self.lam)
             self.u_end = self.delta_hat * self.end.delta
             if self.u_end < -U_END_LIMIT:
@@ -263,7 +262,8 @@ class AsperityLaw:
         if targets.size == 0:
             return ()
         t = md_t_of_radius(targets, self.lam)
-        return tuple(sorted(self.delta_hat * md_curve(t, self.lam)[2]))
+        # One or two radii: the curve point by point (its fast path for single floats).
+        return tuple(sorted(self.delta_hat * float(md_curve(float(x), self.lam)[2]) for x in t))
 
     def evaluate(self, u_bar):
         """Contact radius :math:`\\bar a` and force :math:`P/(Gb^2)` at penetrations ``u_bar``.
@@ -277,7 +277,7 @@ class AsperityLaw:
         a = np.zeros_like(u)
         P = np.zeros_like(u)
         on = u >= self.u_end
-        if np.any(on):
+        if on.any():
             delta = np.maximum(u[on] / self.delta_hat, self.end.delta)
             A, PM, _ = md_solve(delta, self.lam)
             a[on] = A / self.A_hat

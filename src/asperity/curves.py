@@ -14,7 +14,7 @@ a given load is the first separation, coming from full contact, at which
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -22,6 +22,7 @@ from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import check_1d, check_scalar_real
 from .asperity_law import ContactLaw, ModelParameters, check_law
 from .heights import GAUSSIAN, HeightDistribution
+from .interaction import as_interaction
 from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
 from .multi_asperity import friction_coefficient, mean_pressure
 from .quantities import CURVE_COLUMNS
@@ -35,7 +36,12 @@ COLUMNS = {name: q.meaning for name, q in CURVE_COLUMNS.items()}
 
 @dataclass(frozen=True)
 class CurveResult:
-    """One curve: NumPy arrays of equal length, one per column of :data:`COLUMNS`."""
+    """One curve: NumPy arrays of equal length, one per column of :data:`COLUMNS`.
+
+    ``plastic`` (:math:`n_p/N`, the fraction of asperities past the critical interference,
+    :data:`asperity.quantities.PLASTIC_COLUMNS`) is None unless the per-asperity law has a
+    critical interference (e.g. Jackson-Green); then it is the last column.
+    """
 
     d: np.ndarray
     P: np.ndarray
@@ -45,13 +51,17 @@ class CurveResult:
     pressure: np.ndarray
     contacts: np.ndarray
     parameters: dict = field(default_factory=dict, compare=False)
+    plastic: np.ndarray | None = None
 
     def __len__(self) -> int:
         return int(np.size(self.d))
 
     def columns(self) -> dict[str, np.ndarray]:
-        """The curve as an ordered dict of column name -> array."""
-        return {name: np.asarray(getattr(self, name)) for name in COLUMNS}
+        """The curve as an ordered dict of column name -> array (``plastic`` last, if present)."""
+        cols = {name: np.asarray(getattr(self, name)) for name in COLUMNS}
+        if self.plastic is not None:
+            cols["plastic"] = np.asarray(self.plastic)
+        return cols
 
     def to_dataframe(self):
         """The curve as a :class:`pandas.DataFrame` (needs pandas: ``asperity[frame]``)."""
@@ -85,15 +95,23 @@ class Model:
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
         Asperity heights (default: ``Gaussian()``, Eq 19).
-    law : ContactLaw, optional
-        Per-asperity law built for these parameters (default: ``AsperityLaw``, Hertz or
-        Maugis-Dugdale); an elastic-plastic law plugs in here.
+    interaction : None, 'none' or an interaction object, optional
+        Asperity interaction (:mod:`asperity.interaction`): None (default) is plain GW;
+        a :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood &
+        Paggi 2008) makes ``d`` the apparent separation from the undeformed surface
+        (non-adhesive models only).
+    law : ContactLaw or law spec, optional
+        Per-asperity law: a :class:`~asperity.asperity_law.ContactLaw` built for these
+        parameters, or a law spec of :data:`asperity.elastic_plastic.LAWS` (anything with a
+        ``contact_law(params)`` method, e.g. ``JacksonGreen(H_over_E=0.01)``), built here.
+        Default: ``AsperityLaw`` (Hertz or Maugis-Dugdale).  A law with a critical
+        interference (``plastic_fraction``) adds the column ``plastic`` to every curve.
 
     Raises
     ------
     ValueError
-        If a parameter is out of its range, ``heights`` is not a HeightDistribution or
-        ``law`` not a ContactLaw for these parameters.
+        If a parameter is out of its range, ``heights`` is not a HeightDistribution,
+        ``law`` not a ContactLaw for these parameters, or ``interaction`` unknown.
 
     Examples
     --------
@@ -104,19 +122,24 @@ class Model:
     """
 
     def __init__(self, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
-                 heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None):
+                 heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None, interaction=None):
         kwargs = {} if friction is None else {"friction": friction}
         self.params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
         if not isinstance(heights, HeightDistribution):
             raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
         self.heights = heights
+        if law is not None and not isinstance(law, ContactLaw) and callable(getattr(law, "contact_law", None)):
+            law = law.contact_law(self.params)  # a law spec (asperity.elastic_plastic.LAWS)
         self.law = check_law(law, self.params)
+        #: Asperity interaction (:mod:`asperity.interaction`); plain GW by default.
+        self.interaction = as_interaction(interaction, adhesive=self.params.adhesive)
         #: Largest valid separation: beyond it every quantity underflows.
         self.d_top = D_MAX - self.law.u_end
         #: Default reach of the pull-off search: 10 sigma past the end of the stable branch.
         self.d_search = 10.0 - self.law.u_end
         self._tab: Tabulation | None = None
         self._pull_off: dict[float, PullOff] = {}
+        self._parameters_dict: dict | None = None
 
     # -- cache ----------------------------------------------------------------------
     def tabulation(self, d_min: float, d_max: float) -> Tabulation:
@@ -128,28 +151,46 @@ class Model:
         return self._tab
 
     def _parameters(self):
-        p = asdict(self.params)
-        p["friction"] = repr(self.params.friction)
-        return p
+        if self._parameters_dict is None:
+            p = {f.name: getattr(self.params, f.name) for f in fields(self.params)}
+            p["friction"] = repr(self.params.friction)
+            if self.interaction.active:
+                p["interaction"] = repr(self.interaction)
+            if callable(getattr(self.law, "parameters", None)):  # e.g. the Jackson-Green law and its hardness
+                p.update(self.law.parameters())
+            self._parameters_dict = p
+        return dict(self._parameters_dict)
 
-    def _result(self, d, sums) -> CurveResult:
+    def _result(self, d, sums, d_local=None) -> CurveResult:
+        """The curve at (apparent) separations ``d``; ``d_local``: the separations the asperities feel."""
         contacts, P, F, area = (sums[:, i] for i in range(4))
+        d_local = d if d_local is None else d_local
+        plastic = (self.law.plastic_fraction(d_local, self.heights) if hasattr(self.law, "plastic_fraction")
+                   else None)
         return CurveResult(d=d, P=P, F=F, mu=friction_coefficient(F, P), area=area,
                            pressure=mean_pressure(P, area, self.params.nu), contacts=contacts,
-                           parameters=self._parameters())
+                           parameters=self._parameters(), plastic=plastic)
 
     # -- curves ---------------------------------------------------------------------
     def separation_curve(self, d) -> CurveResult:
         """All quantities at separations ``d``: :func:`separation_curve` for this model."""
         d = check_separation(check_1d(d, "d"), d_max=self.d_top)
         tab = self.tabulation(float(d.min()), max(float(d.max()), 10.0))
-        return self._result(d, tab.sums(d)[0])
+        if not self.interaction.active:
+            return self._result(d, tab.sums(d)[0])
+        # Interaction hook: the asperities feel the local separation d_loc = d + Delta(P(d_loc)) <= d + Delta(P(d)).
+        reach = min(float(np.max(d + self.interaction.shift(tab.sums(d)[0][:, 1]))), self.d_top)
+        tab = self.tabulation(float(d.min()), max(reach, 10.0))
+        d_loc = np.minimum(self.interaction.local_separation(
+            d, lambda x: tuple(s[:, 1] for s in tab.sums(np.minimum(x, reach), order=1))), reach)
+        return self._result(d, tab.sums(d_loc)[0], d_loc)
 
     def pull_off(self, d_max: float | None = None) -> PullOff:
         """Largest tensile force for -3 <= d/sigma <= ``d_max``: :func:`pull_off` for this model (cached).
 
         ``d_max`` defaults to :attr:`d_search`, 10 sigma beyond the end of the asperities'
-        stable branch.
+        stable branch.  After :meth:`load_curve` the search made on its grid (which spans
+        ``[d_lo <= -3, d_search]``) is reused.
         """
         if d_max is None:
             d_max = self.d_search
@@ -169,14 +210,19 @@ class Model:
         if not self.params.adhesive and np.any(P <= 0):
             raise ValueError("P (load) must be > 0 without adhesion (gamma = 0); "
                              f"got min {P.min():g}")
-        d_hi = self.d_search
-        d_lo = start_separation(self.params, float(P.max()), d_hi)
-        d_lo, self._tab = bracket_low(self.tabulation(d_lo, d_hi), float(P.max()), d_lo, d_hi)
-        branch = stable_branch(self._tab, d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
+        d_hi, P_max = self.d_search, float(P.max())
+        d_lo = start_separation(self.params, P_max, d_hi)
+        branch = stable_branch(self.tabulation(d_lo, d_hi), d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
                                pull_off=self._pull_off.get(d_hi))
+        if not branch.P[0] > P_max:  # the Hertz estimate fell short: step down (bracket_low) and redo
+            d_lo, self._tab = bracket_low(branch.tab, P_max, d_lo - max(2.0, 0.5 * abs(d_lo)), d_hi)
+            branch = stable_branch(self._tab, d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
+                                   pull_off=branch.pull_off)
         self._tab = branch.tab
-        if branch.pull_off is not None:
-            self._pull_off.setdefault(d_hi, branch.pull_off)
+        # The branch's grid spans [d_lo <= -3, d_hi]: the pull-off search it made (or its finding
+        # that the force stays compressive there) serves pull_off() too.
+        self._pull_off.setdefault(d_hi, branch.pull_off if branch.pull_off is not None
+                                  else PullOff(0.0, float("nan"), False))
         floor = branch.P[-1]
         if P.min() < floor:
             what = "minus the pull-off force" if floor < 0 else f"the force at d/sigma = {branch.grid[-1]:.4g}"
@@ -184,11 +230,12 @@ class Model:
                              f"load; got min {P.min():g}")
         d, sums = invert_branch(branch.tab, P, branch.grid, branch.P, branch.dP)
         sums[:, 1] = P  # solved for to rounding; report the load asked for
-        return self._result(d, sums)
+        # Interaction hook: the apparent separation is the local one less the uniform sinking.
+        return self._result(d - self.interaction.shift(P), sums, d)
 
 
 def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
-                     heights=GAUSSIAN) -> CurveResult:
+                     heights=GAUSSIAN, interaction=None) -> CurveResult:
     r"""Normal and friction force, :math:`\mu`, area, pressure and contacts versus separation (Figs 7-8).
 
     .. math::
@@ -218,6 +265,11 @@ def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
         Asperity heights (default: ``Gaussian()``, Eq 19).
+    interaction : None, 'none' or an interaction object, optional
+        Asperity interaction (:mod:`asperity.interaction`; default None, plain GW): with a
+        :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood & Paggi
+        2008, non-adhesive only) ``d`` is the apparent separation from the undeformed
+        surface, the asperities sitting at :math:`d_{loc} = d + k\bar P`.
 
     Returns
     -------
@@ -243,11 +295,11 @@ def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
     Adams et al., Eqs (1), (5), (6), (10), (18), (21); Figs 7-8.
     """
     return Model(alpha, beta, gamma, nu=nu, h_over_b=h_over_b, friction=friction,
-                 heights=heights).separation_curve(d)
+                 heights=heights, interaction=interaction).separation_curve(d)
 
 
 def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
-               heights=GAUSSIAN) -> CurveResult:
+               heights=GAUSSIAN, interaction=None) -> CurveResult:
     r"""All quantities at the stable separation for each normal load (Figs 3-6, 9).
 
     The separation under a load :math:`P` is the first one, coming from full contact, where
@@ -276,6 +328,11 @@ def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
     heights : HeightDistribution
         Asperity heights (default: ``Gaussian()``, Eq 19).
+    interaction : None, 'none' or an interaction object, optional
+        Asperity interaction (:mod:`asperity.interaction`; default None, plain GW): with a
+        :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood & Paggi
+        2008, non-adhesive only) ``d`` is the apparent separation from the undeformed
+        surface, the asperities sitting at :math:`d_{loc} = d + k\bar P`.
 
     Returns
     -------
@@ -303,7 +360,7 @@ def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None
     Adams et al., Eqs (1), (6), (10), (18), (21); Figs 3-6, 9.
     """
     return Model(alpha, beta, gamma, nu=nu, h_over_b=h_over_b, friction=friction,
-                 heights=heights).load_curve(P)
+                 heights=heights, interaction=interaction).load_curve(P)
 
 
 def pull_off(alpha, beta, gamma, *, nu=0.3, h_over_b=1.0, friction=None, heights=GAUSSIAN,

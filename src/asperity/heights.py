@@ -119,7 +119,7 @@ class Gaussian(HeightDistribution):
         """
         # Shift by a reference d0 so e^(-(d - d0) xi) stays finite; where e^(-(c + d0) xi)
         # would overflow the density factor phi(d + c) is already exactly zero.
-        d0 = float(np.median(d)) if d.size else 0.0
+        d0 = 0.5 * float(d.min() + d.max()) if d.size else 0.0  # mid-range: smallest |d - d0|
         far = np.abs(d - d0) * np.abs(offsets).max() > 100.0
         if np.any(far):
             out = [np.empty((d.size, weights.shape[-1])) for _ in range(order + 1)]
@@ -139,7 +139,7 @@ class Gaussian(HeightDistribution):
             npan, nj, nc = Wk.shape
             # M[n, p, c] = sum_j B[n, j] Wk[p, j, c]
             M = (B @ Wk.transpose(1, 0, 2).reshape(nj, npan * nc)).reshape(-1, npan, nc)
-            sums.append(np.einsum("np,npc->nc", A, M))
+            sums.append((A[:, None, :] @ M)[:, 0, :])  # sum_p A[n, p] M[n, p, c]
         return self._combine(d, sums)
 
     @staticmethod

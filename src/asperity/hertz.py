@@ -30,7 +30,8 @@ from ._validation import (
     check_radius,
 )
 
-__all__ = ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md"]
+__all__ = ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md", "hertz_contact_radius",
+           "hertz_normal_force"]
 
 _FLOAT_MAX = float(np.finfo(float).max)
 
@@ -210,3 +211,89 @@ def hertz_penetration_md(A):
     with np.errstate(over="ignore"):
         D = A**2
     return check_overflow(D, "A", np.sqrt(_FLOAT_MAX), A)
+
+
+# -- the physical shell ----------------------------------------------------------------------
+def hertz_contact_radius(P, *, R, E_star):
+    r"""Hertz contact radius of a sphere on a flat at load :math:`P`, in metres.
+
+    .. math::
+        a = \Big(\frac{PR}{K}\Big)^{1/3},\qquad K = \tfrac43E^*,\qquad P \ge 0
+
+    Parameters
+    ----------
+    P : array_like
+        Normal load :math:`P` (N), >= 0.
+    R : array_like
+        Sphere (tip) radius :math:`R` (m), > 0.
+    E_star : array_like
+        Composite Young's modulus :math:`E^*` (Pa), > 0.
+
+    Returns
+    -------
+    ndarray
+        Contact radius :math:`a` (m), the broadcast shape of the inputs.
+
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite or out of range (a negative load: no adhesion,
+        no tensile contact).
+
+    Examples
+    --------
+    >>> round(float(hertz_contact_radius(1e-6, R=1e-6, E_star=0.75e9)) * 1e9, 9)  # (1e-21 m^3)^(1/3) in nm
+    100.0
+
+    References
+    ----------
+    H. Hertz (1882); Johnson (1985), Eq (4.22).
+    """
+    P = as_float_array(P, "P", allow_empty=True)
+    R = check_positive(R, "R")
+    K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    if np.any(P < 0):
+        raise ValueError(f"P (load) must be >= 0 without adhesion (Hertz), got min {P.min():g} N")
+    return np.cbrt(P * R / K)
+
+
+def hertz_normal_force(delta, *, R, E_star):
+    r"""Hertz normal force of a sphere on a flat at penetration :math:`\delta`, in newtons.
+
+    .. math::
+        P = KR^{1/2}\delta^{3/2},\qquad K = \tfrac43E^*,\qquad \delta \ge 0
+
+    Parameters
+    ----------
+    delta : array_like
+        Penetration :math:`\delta` (m), >= 0.
+    R : array_like
+        Sphere radius :math:`R` (m), > 0.
+    E_star : array_like
+        Composite Young's modulus :math:`E^*` (Pa), > 0.
+
+    Returns
+    -------
+    ndarray
+        Normal force :math:`P` (N), the broadcast shape of the inputs.
+
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite or out of range (a negative penetration).
+
+    Examples
+    --------
+    >>> float(hertz_normal_force(1e-9, R=1e-6, E_star=0.75e9)) == 1e9 * 1e-3 * 1e-9**1.5
+    True
+
+    References
+    ----------
+    H. Hertz (1882); Johnson (1985), Eq (4.23).
+    """
+    delta = as_float_array(delta, "delta", allow_empty=True)
+    R = check_positive(R, "R")
+    K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    if np.any(delta < 0):
+        raise ValueError("delta (penetration) must be >= 0 without adhesion (Hertz)")
+    return K * np.sqrt(R) * delta**1.5

@@ -19,9 +19,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_overflow, check_radius
+from ._validation import as_float_array, check_nonnegative, check_overflow, check_positive, check_radius, scalar
 
-__all__ = ["jkr_load", "jkr_penetration", "jkr_pull_off"]
+__all__ = ["jkr_load", "jkr_penetration", "jkr_pull_off", "jkr_solve_load", "jkr_solve", "jkr_contact_radius",
+           "jkr_normal_force", "jkr_pull_off_force"]
 
 _FLOAT_MAX = float(np.finfo(float).max)
 
@@ -96,7 +97,7 @@ def jkr_penetration(A):
     Johnson, Kendall & Roberts (1971); Maugis (1992).
     """
     A = check_radius(A)
-    with np.errstate(over="ignore"):
+    with np.errstate(over="ignore", invalid="ignore"):  # inf - inf for a huge A: the named error below
         D = A**2 - np.sqrt(8.0 * A / 3.0)
     return check_overflow(D, "A", np.sqrt(_FLOAT_MAX), A)
 
@@ -139,3 +140,266 @@ def jkr_pull_off(control: str = "load"):
     if control == "displacement":
         return 6.0 ** (-1.0 / 3.0), -5.0 / 6.0
     raise ValueError(f"control must be 'load' or 'displacement', got {control!r}")
+
+
+# -- load control, displacement control and the physical shell -----------------------------
+#: Radius and penetration at the end of the displacement-stable branch, A = 6^(-1/3).
+_A_C = 6.0 ** (-1.0 / 3.0)
+_DELTA_C = _A_C**2 - np.sqrt(8.0 * _A_C / 3.0)
+
+
+def jkr_solve_load(P):
+    r"""JKR contact radius and penetration at a given load (load control), in Maugis' units.
+
+    The load-stable branch of :math:`P = A^3 - \sqrt{6A^3}` (:math:`A^3 \ge 3/2`) solved for
+    :math:`s = A^{3/2}` from :math:`s^2 - \sqrt6\,s - P = 0`:
+
+    .. math::
+        A = \Big(\frac{\sqrt6 + \sqrt{6 + 4P}}{2}\Big)^{2/3},\qquad \Delta = A^2 - \sqrt{8A/3},
+        \qquad P \ge -\tfrac32
+
+    Parameters
+    ----------
+    P : array_like
+        Load :math:`P/(\pi wR)`, from the load-controlled pull-off -3/2 up, at most 1e300.
+        May be empty.
+
+    Returns
+    -------
+    A, delta : ndarray
+        Contact radius :math:`a(K/\pi wR^2)^{1/3}` and penetration
+        :math:`\Delta = u(K^2/\pi^2w^2R)^{1/3}`, the shape of ``P``.
+
+    Raises
+    ------
+    ValueError
+        If ``P`` is not real and finite or lies outside :math:`[-3/2, 10^{300}]`.
+
+    Examples
+    --------
+    >>> A, delta = jkr_solve_load([-1.5, 0.0])
+    >>> [round(float(x**3), 12) for x in A]  # pull-off at A^3 = 3/2; A^3 = 6 at zero load
+    [1.5, 6.0]
+
+    References
+    ----------
+    Johnson, Kendall & Roberts (1971); Maugis (1992).
+    """
+    P = as_float_array(P, "P", allow_empty=True)
+    if np.any((P < -1.5) | (P > 1e300)):
+        raise ValueError(f"P (load over pi w R) must lie in [-1.5, 1e300] (from the JKR pull-off), got values "
+                         f"from {P.min():g} to {P.max():g}")
+    s = 0.5 * (np.sqrt(6.0) + np.sqrt(6.0 + 4.0 * P))
+    A = np.cbrt(s * s)
+    return A, A * A - np.sqrt(8.0 * A / 3.0)
+
+
+def jkr_solve(delta):
+    r"""JKR contact radius and load at a given penetration (displacement control), in Maugis' units.
+
+    Solves :math:`\Delta = A^2 - \sqrt{8A/3}` on the stable branch :math:`A \ge 6^{-1/3}`
+    (:math:`d\Delta/dA \ge 0`) for :math:`x = \sqrt A` (Newton's method on the convex, increasing
+    :math:`x^4 - \sqrt{8/3}\,x - \Delta`, from the right), then :math:`P = A^3 - \sqrt{6A^3}`.
+
+    .. math::
+        \Delta = A^2 - \sqrt{8A/3},\qquad P = A^3 - \sqrt{6A^3},\qquad A \ge 6^{-1/3}
+
+    Parameters
+    ----------
+    delta : array_like
+        Penetration :math:`\Delta = u(K^2/\pi^2w^2R)^{1/3}`, from the end of the stable branch
+        :math:`\Delta_c = A_c^2 - \sqrt{8A_c/3} \approx -0.9086` at :math:`A_c = 6^{-1/3}`, up to 1e150.
+        May be empty.
+
+    Returns
+    -------
+    A, P : ndarray
+        Contact radius :math:`a(K/\pi wR^2)^{1/3}` and load :math:`P/(\pi wR)`, the shape of
+        ``delta``.
+
+    Raises
+    ------
+    ValueError
+        If ``delta`` is not real and finite or lies outside :math:`[\Delta_c, 10^{150}]`.
+
+    Examples
+    --------
+    >>> A, P = jkr_solve([float(jkr_penetration(2.0))])
+    >>> round(float(A[0]), 12), round(float(P[0]), 12) == round(float(jkr_load(2.0)), 12)
+    (2.0, True)
+
+    References
+    ----------
+    Johnson, Kendall & Roberts (1971); Maugis (1992).
+    """
+    delta = as_float_array(delta, "delta", allow_empty=True)
+    if np.any((delta < _DELTA_C) | (delta > 1e150)):
+        raise ValueError(f"delta (penetration) must lie in [{_DELTA_C:.17g}, 1e150] (from the end of the "
+                         f"stable JKR branch), got values from {delta.min():g} to {delta.max():g}")
+    c = np.sqrt(8.0 / 3.0)
+    x_c = np.sqrt(_A_C)
+    # Start right of the root (f(x) >= 0), then Newton descends monotonically (f convex, increasing).
+    x = np.maximum(x_c, np.sqrt(np.sqrt(np.abs(delta)))) + np.cbrt(c) + 1.0
+    for _ in range(200):
+        f = x**4 - c * x - delta
+        df = 4.0 * x**3 - c
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(df > 0, f / df, 0.0)
+        x_new = np.maximum(x - step, x_c)
+        if np.all(np.abs(x_new - x) <= 1e-15 * x):
+            x = x_new
+            break
+        x = x_new
+    A = x * x
+    return A, A**3 - np.sqrt(6.0 * A**3)
+
+
+def _physical(R, w, E_star):
+    R = check_positive(R, "R")
+    w = check_nonnegative(w, "w")
+    return R, w, (4.0 / 3.0) * check_positive(E_star, "E_star")
+
+
+def jkr_contact_radius(P, *, R, w, E_star):
+    r"""JKR contact radius of a sphere on a flat at load :math:`P` (load control), in metres.
+
+    .. math::
+        a^3 = \frac{R}{K}\Big(P + 3\pi wR + \sqrt{6\pi wRP + (3\pi wR)^2}\Big),\qquad
+        K = \tfrac43E^*,\qquad P \ge -\tfrac32\pi wR
+
+    (Johnson, Kendall & Roberts 1971, Eq 2); :math:`w = 0` is Hertz, :math:`a^3 = RP/K`.
+
+    Parameters
+    ----------
+    P : array_like
+        Normal load :math:`P` (N, compressive > 0), at least minus the pull-off force
+        :math:`\tfrac32\pi wR` (:func:`jkr_pull_off_force`).
+    R : array_like
+        Sphere (tip) radius :math:`R` (m), > 0.
+    w : array_like
+        Work of adhesion :math:`w` (J/m^2), >= 0.
+    E_star : array_like
+        Composite Young's modulus :math:`E^*` (Pa), > 0.
+
+    Returns
+    -------
+    ndarray
+        Contact radius :math:`a` (m), the broadcast shape of the inputs.
+
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite or out of range, or a load is below
+        :math:`-\tfrac32\pi wR`.
+
+    Examples
+    --------
+    >>> import math
+    >>> R, w, E_star = 20e-9, 0.1, 100e9
+    >>> a = float(jkr_contact_radius(-1.5 * math.pi * w * R, R=R, w=w, E_star=E_star))
+    >>> round(a**3 / (1.5 * math.pi * w * R**2 / (4 / 3 * E_star)), 12)  # A^3 = 3/2 at pull-off
+    1.0
+
+    References
+    ----------
+    K. L. Johnson, K. Kendall, A. D. Roberts, Proc. R. Soc. A 324 (1971) 301, Eq (2);
+    Maugis (1992).
+    """
+    P = as_float_array(P, "P", allow_empty=True)
+    R, w, K = _physical(R, w, E_star)
+    Q = 3.0 * np.pi * w * R
+    if np.any(P < -0.5 * Q * (1.0 + 1e-15)):
+        raise ValueError("P (load) must be >= -3/2 pi w R (the JKR pull-off load), got min "
+                         f"{P.min():g} N")
+    root = np.sqrt(np.maximum(2.0 * Q * P + Q * Q, 0.0))
+    return np.cbrt(R / K * (P + Q + root))
+
+
+def jkr_normal_force(delta, *, R, w, E_star):
+    r"""JKR normal force of a sphere on a flat at penetration :math:`\delta` (displacement control), in newtons.
+
+    .. math::
+        P = \pi wR\,(A^3 - \sqrt{6A^3}),\qquad
+        \delta\Big(\frac{K^2}{\pi^2w^2R}\Big)^{1/3} = A^2 - \sqrt{8A/3},\qquad A \ge 6^{-1/3}
+
+    on the stable branch (:func:`jkr_solve`); :math:`w = 0` is Hertz,
+    :math:`P = KR^{1/2}\delta^{3/2}`.
+
+    Parameters
+    ----------
+    delta : array_like
+        Penetration :math:`\delta` (m) of the undeformed sphere into the flat (negative: apart),
+        from the end of the stable branch, :math:`-0.9086\,(\pi^2w^2R/K^2)^{1/3}`, up; >= 0 for
+        :math:`w = 0`.
+    R : float
+        Sphere radius :math:`R` (m), > 0.
+    w : float
+        Work of adhesion :math:`w` (J/m^2), >= 0.
+    E_star : float
+        Composite Young's modulus :math:`E^*` (Pa), > 0.
+
+    Returns
+    -------
+    ndarray
+        Normal force :math:`P` (N, compressive > 0), the shape of ``delta``.
+
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite or out of range, or a penetration lies below the
+        end of the stable branch.
+
+    Examples
+    --------
+    >>> import math
+    >>> R, E_star = 1e-6, 1e9
+    >>> float(jkr_normal_force(1e-9, R=R, w=0.0, E_star=E_star)) == 4 / 3 * E_star * math.sqrt(R) * 1e-9**1.5
+    True
+
+    References
+    ----------
+    Johnson, Kendall & Roberts (1971); Maugis (1992).
+    """
+    delta = as_float_array(delta, "delta", allow_empty=True)
+    R, w, K = (float(scalar(x, n)) for x, n in zip(_physical(R, w, E_star), ("R", "w", "E_star"), strict=True))
+    if w == 0.0:
+        if np.any(delta < 0):
+            raise ValueError("delta (penetration) must be >= 0 without adhesion (w = 0, Hertz)")
+        return K * np.sqrt(R) * delta**1.5
+    scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
+    return jkr_solve(delta / scale)[1] * np.pi * w * R
+
+
+def jkr_pull_off_force(*, R, w):
+    r"""JKR pull-off force under load control, :math:`\tfrac32\pi wR`, in newtons (the load there is minus it).
+
+    .. math:: F_{po} = \tfrac32\pi wR
+
+    Parameters
+    ----------
+    R : array_like
+        Sphere radius :math:`R` (m), > 0.
+    w : array_like
+        Work of adhesion :math:`w` (J/m^2), >= 0.
+
+    Returns
+    -------
+    ndarray
+        The pull-off force (N), broadcast over the inputs.
+
+    Raises
+    ------
+    ValueError
+        If an input is not real and finite or out of range.
+
+    Examples
+    --------
+    >>> import math
+    >>> float(jkr_pull_off_force(R=1e-6, w=0.1)) == 1.5 * math.pi * 0.1 * 1e-6
+    True
+
+    References
+    ----------
+    Johnson, Kendall & Roberts (1971).
+    """
+    return 1.5 * np.pi * check_nonnegative(w, "w") * check_positive(R, "R")

@@ -180,7 +180,8 @@ def force_grid(tab: Tabulation, d_lo, d_hi, n=None):
     d_lo, d_hi : float
         Ends of the grid, :math:`d/\sigma`, ``d_lo < d_hi``.
     n : int, optional
-        Number of points, >= 2 (default: one per 0.05 sigma, clipped to 100..800).
+        Number of points, >= 2 (default: one per 0.15 sigma, clipped to 40..800; the cubic
+        Hermite guesses of :func:`branch_guess` and the pull-off search are good to ~1e-5 there).
 
     Returns
     -------
@@ -204,7 +205,7 @@ def force_grid(tab: Tabulation, d_lo, d_hi, n=None):
     Adams et al., Eqs (6), (18).
     """
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi)
-    n = int(np.clip((d_hi - d_lo) / 0.05, 100, 800)) if n is None else check_integer(n, "n", 2, 10**6)
+    n = int(np.clip((d_hi - d_lo) / 0.15, 40, 800)) if n is None else check_integer(n, "n", 2, 10**6)
     grid = np.linspace(d_lo, d_hi, n)
     g0, g1 = tab.sums(grid, order=1)
     return grid, g0[:, 1], g1[:, 1]
@@ -263,7 +264,7 @@ def stable_branch(tab: Tabulation, d_lo, d_hi, *, d_top=None, P_min=None, pull_o
     i = int(np.argmin(Pg))
     if Pg[i] < 0:  # a pull-off force exists: the branch ends there; this grid locates it
         if pull_off is None:
-            pull_off = find_pull_off(tab, d_lo, d_hi, grid, Pg)
+            pull_off = find_pull_off(tab, d_lo, d_hi, grid, Pg, dPg)
         floor = -pull_off.force
         return Branch(np.append(grid[:i], pull_off.d), np.append(Pg[:i], floor), np.append(dPg[:i], 0.0), tab,
                       pull_off)
@@ -330,8 +331,10 @@ def _check_grid(grid, Pg, dPg):
 
 def _branch_guess(P, grid, Pg, dPg):
     n = grid.size
-    below = Pg[None, :] <= P[:, None]
-    j = np.clip(np.argmax(below, axis=1), 1, n - 1)
+    if (np.diff(Pg) < 0).all():  # strictly falling: the first point at or below P, by bisection
+        j = np.clip(np.searchsorted(-Pg, -P, side="left"), 1, n - 1)
+    else:
+        j = np.clip(np.argmax(Pg[None, :] <= P[:, None], axis=1), 1, n - 1)
     a, b = grid[j - 1].copy(), grid[j].copy()
     nonzero = np.abs(P[P != 0])
     s = max(1e-3 * (nonzero.min() if nonzero.size else np.abs(Pg).max()), 1e-300)
@@ -342,13 +345,18 @@ def _branch_guess(P, grid, Pg, dPg):
     mb = dPg[j] / np.hypot(s, Pg[j]) * h
     with np.errstate(divide="ignore", invalid="ignore"):
         t = np.clip(np.where(ya != yb, (ya - y) / (ya - yb), 0.5), 0.0, 1.0)
-        for _ in range(4):  # Newton on the Hermite cubic in t in [0, 1]
-            t2, t3 = t * t, t * t * t
-            H = ((2 * t3 - 3 * t2 + 1) * ya + (t3 - 2 * t2 + t) * ma
-                 + (-2 * t3 + 3 * t2) * yb + (t3 - t2) * mb)
-            dH = ((6 * t2 - 6 * t) * ya + (3 * t2 - 4 * t + 1) * ma
-                  + (-6 * t2 + 6 * t) * yb + (3 * t2 - 2 * t) * mb)
-            t = np.clip(np.where(dH != 0, t - (H - y) / dH, t), 0.0, 1.0)
+        # The Hermite cubic as c3 t^3 + c2 t^2 + c1 t + c0 (minus y), t in [0, 1].
+        c0, c1 = ya - y, ma
+        c2 = 3.0 * (yb - ya) - 2.0 * ma - mb
+        c3 = 2.0 * (ya - yb) + ma + mb
+        for _ in range(4):  # Newton on it; stops early once every step is at rounding level
+            H = ((c3 * t + c2) * t + c1) * t + c0
+            dH = (3.0 * c3 * t + 2.0 * c2) * t + c1
+            t_new = np.clip(np.where(dH != 0, t - H / dH, t), 0.0, 1.0)
+            if not (np.abs(t_new - t) > 1e-13).any():
+                t = t_new
+                break
+            t = t_new
     t = np.where(np.isfinite(t), t, 0.5)
     return a, b, a + h * t
 
@@ -356,9 +364,11 @@ def _branch_guess(P, grid, Pg, dPg):
 def invert_branch(tab: Tabulation, P, grid, Pg, dPg):
     r"""Separations where :math:`\bar P(\bar d) = P` on a monotone branch, and the integrals there.
 
-    Safeguarded Newton from :func:`branch_guess`, keeping the bracket.  Once a step is
-    below 1e-7 the integrals are carried to the new point by a first-order Taylor step
-    (error ~1e-14 relative), which saves a final pass over the quadrature nodes.  The
+    Safeguarded Halley steps (the root of the quadratic Taylor polynomial of
+    :math:`\bar P`, from the integrals' first two separation derivatives) from
+    :func:`branch_guess`, keeping the bracket.  Once a step is below 1e-5 (the error after
+    it is ~1e-15) the integrals are carried to the new point by a second-order Taylor step,
+    which saves a final pass over the quadrature nodes: one pass usually suffices.  The
     branch may fall (loading, :func:`stable_branch`) or rise (e.g. beyond pull-off) from
     ``grid[0]`` to ``grid[-1]``; each load's separation is the first crossing coming from
     ``grid[0]``, the only one where the force is monotone.
@@ -422,22 +432,27 @@ def _invert(tab, P, grid, Pg, dPg, sign=1.0):
         if active.size == 0:
             break
         xa = x[active]
-        s0, s1 = tab.sums(xa, order=1)
+        s0, s1, s2 = tab.sums(xa, order=2)
         r = sign * s0[:, 1] - target[active]
         g = sign * s1[:, 1]
+        h = sign * s2[:, 1]
         a[active] = np.where(r > 0, xa, a[active])
         b[active] = np.where(r < 0, xa, b[active])
-        with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(g < 0, -r / g, np.nan)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            newton = np.where(g < 0, -r / g, np.nan)
+            # Halley: the root of the quadratic Taylor polynomial, error O(step^3).
+            step = np.where(g < 0, -r / (g + 0.5 * h * newton), np.nan)
+        step = np.where(np.abs(step - newton) <= np.abs(newton), step, newton)  # far out: plain Newton
         x_new = xa + step
         bad = ~np.isfinite(x_new) | (x_new < a[active]) | (x_new > b[active])
         x_new = np.where(bad, 0.5 * (a[active] + b[active]), x_new)
-        done = ~bad & (np.abs(step) <= 1e-7 * np.maximum(1.0, np.abs(xa)))
+        done = ~bad & (np.abs(step) <= 1e-5 * np.maximum(1.0, np.abs(xa)))
         done |= (b[active] - a[active]) <= 1e-14 * np.maximum(1.0, np.abs(xa))
         step = np.where(bad, 0.0, step)
         fin = active[done]
         d[fin] = np.where(bad[done], xa[done], x_new[done])
-        out[fin] = s0[done] + s1[done] * step[done, None]
+        sd = step[done, None]
+        out[fin] = s0[done] + sd * (s1[done] + 0.5 * sd * s2[done])  # error ~ step^3
         x[active] = x_new
         active = active[~done]
     if active.size:  # pragma: no cover - Newton with bisection always converges

@@ -4,7 +4,9 @@ The model (Adams, Müftü & Mohd Azhar) has **one elastic rough body on a rigid 
 :math:`E^* = E/(1-\nu^2)`, :math:`G^* = 2G`, :math:`E^*/G = 2/(1-\nu)`, forces in units of
 :math:`Gb^2` and friction stresses in units of :math:`G^*`.  A :class:`Material` is such a
 body: Young's modulus ``E`` (Pa), Poisson's ratio ``nu``, Burgers vector ``b`` (m), work of
-adhesion ``w`` (J/m^2) and optionally the Dugdale range ``h`` (m) or stress ``sigma0`` (Pa).
+adhesion ``w`` (J/m^2) and optionally the Dugdale range ``h`` (m) or stress ``sigma0`` (Pa),
+the hardness ``H`` (Pa) and the Nix-Gao indentation-size-effect pair ``H0`` (Pa), ``h_star``
+(m) for the elastic-plastic law (docs/plasticity.md).
 
 **Two elastic bodies** (:func:`pair`).  Contact mechanics combines them into
 :math:`E^* = [(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2]^{-1}` (Hertz, Johnson 1985 §4.2) and the
@@ -61,6 +63,9 @@ TABLE_UNITS = {
     "b_m": "m",
     "surface_energy_J_m2": "J/m^2",
     "work_of_adhesion_J_m2": "J/m^2",
+    "hardness_Pa": "Pa",
+    "ise_H0_Pa": "Pa",
+    "ise_h_star_m": "m",
 }
 
 
@@ -88,6 +93,13 @@ class Material:
         :math:`h = w/\sigma_0`).  Giving both requires :math:`w = \sigma_0 h`.
     components : tuple of str
         For a :func:`pair`, the names of the two bodies; empty for one body.
+    H : float or pint.Quantity, optional
+        Hardness (Pa), > 0: the mean pressure of a fully plastic contact (the table lists
+        Vickers hardness).  None if unknown (no plasticity index, no yield check).
+    H0 : float or pint.Quantity, optional
+        Nix-Gao large-indent hardness :math:`H_0` (Pa), > 0, paired with ``h_star``.
+    h_star : float or pint.Quantity, optional
+        Nix-Gao size-effect length :math:`h^*` (m), >= 0, paired with ``H0``.
     bodies : tuple of Material
         For a :func:`pair`, the two bodies themselves (their own ``E`` and ``nu``); empty
         for one body on a rigid flat.
@@ -116,6 +128,9 @@ class Material:
     h: float | None = None
     sigma0: float | None = None
     components: tuple[str, ...] = ()
+    H: float | None = None
+    H0: float | None = None
+    h_star: float | None = None
     bodies: tuple[Material, ...] = field(default=(), repr=False, compare=False)
 
     def __post_init__(self):
@@ -136,6 +151,9 @@ class Material:
         setattr_("bodies", tuple(self.bodies))
         if self.bodies and not self.components:
             setattr_("components", tuple(x.name for x in self.bodies))
+        setattr_("H", check_optional_positive(self.H, "H", "Pa"))
+        setattr_("H0", check_optional_positive(self.H0, "H0", "Pa"))
+        setattr_("h_star", check_optional_positive(self.h_star, "h_star", "m", allow_zero=True))
         self._check_dugdale()
 
     def _check_dugdale(self):
@@ -249,7 +267,7 @@ def _check_effective_poisson(nu_eff: float, label: str) -> float:
     return nu_eff
 
 
-def pair(first, second, *, w=None, b=None, h=None, name: str | None = None) -> Material:
+def pair(first, second, *, w=None, b=None, h=None, H=None, name: str | None = None) -> Material:
     r"""The equivalent single body (on a rigid flat) of two elastic bodies in contact.
 
     Parameters
@@ -265,6 +283,10 @@ def pair(first, second, *, w=None, b=None, h=None, name: str | None = None) -> M
         different values raise :class:`ValueError` (choose one explicitly).
     h : float or pint.Quantity, optional
         Dugdale range (m).
+    H : float or pint.Quantity, optional
+        Hardness of the pair (Pa) for the elastic-plastic law.  Default: for two bodies of
+        the same name, that body's ``H`` (with its ``H0``, ``h_star``); otherwise None
+        (unknown: which body yields, and how, is the user's to say).
     name : str, optional
         Default ``"first/second"``.
 
@@ -293,10 +315,14 @@ def pair(first, second, *, w=None, b=None, h=None, name: str | None = None) -> M
     g_star = 2.0 * one.G * two.G / (one.G + two.G)
     label = f"{one.name}/{two.name}" if name is None else check_text(name, "name")
     nu_eff = _check_effective_poisson(_effective_poisson(one, two), label)
-    if w is None and one.name.lower() == two.name.lower():
+    same = one.name.lower() == two.name.lower()
+    if w is None and same:
         w = one.w
+    H0, h_star = (one.H0, one.h_star) if same and H is None else (None, None)
+    if H is None and same:
+        H = one.H
     return Material(label, E=(1.0 + nu_eff) * g_star, nu=nu_eff, b=_pair_b(one, two, b), w=w, h=h,
-                    components=(one.name, two.name), bodies=(one, two))
+                    components=(one.name, two.name), H=H, H0=H0, h_star=h_star, bodies=(one, two))
 
 
 # -- the table ---------------------------------------------------------------------------
@@ -392,6 +418,7 @@ def material(name: str) -> Material:
         return pair(first, second, w=row["work_of_adhesion_J_m2"], name=row["name"])
     if row["E_Pa"] is None or row["nu"] is None:
         raise ValueError(f"material {row['name']!r} has no E/nu in the table")
-    return Material(row["name"], E=row["E_Pa"], nu=row["nu"], b=row["b_m"], w=row["work_of_adhesion_J_m2"])
+    return Material(row["name"], E=row["E_Pa"], nu=row["nu"], b=row["b_m"], w=row["work_of_adhesion_J_m2"],
+                    H=row["hardness_Pa"], H0=row["ise_H0_Pa"], h_star=row["ise_h_star_m"])
 
 

@@ -59,7 +59,7 @@ def check_lambda(lam):
     """
     lam = check_positive(lam, "lam")
     lo, hi = LAMBDA_RANGE
-    if np.any((lam < lo) | (lam > hi)):
+    if ((lam < lo) | (lam > hi)).any():
         raise ValueError(f"lam (Maugis parameter) must lie in [{lo:g}, {hi:g}] (use asperity.dmt below and "
                          f"asperity.jkr above), got {lam!r}")
     return lam
@@ -259,70 +259,106 @@ def md_solve(delta, lam):
     lam = float(scalar(check_lambda(lam), "lam"))
     delta = as_float_array(delta, "delta", allow_empty=True)
     end = _branch_end(lam)
-    if np.any((delta < end.delta) | (delta > DELTA_MAX)):
+    if ((delta < end.delta) | (delta > DELTA_MAX)).any():
         raise ValueError(f"delta (penetration) must lie in [{end.delta:.17g}, {DELTA_MAX:g}] for lam={lam:g}: "
                          f"from the end of the stable branch to DELTA_MAX; got "
                          f"values from {delta.min():g} to {delta.max():g}")
-    t = _invert_penetration(delta, lam, end)
-    # At the end of a branch that runs to A -> 0 (t = inf) take the limit values.
-    finite = np.isfinite(t)
-    A, P, _ = _md_curve(np.where(finite, t, 1.0), lam)
-    A = np.where(finite, A, end.A)
-    P = np.where(finite, P, end.P)
+    t, A, P = _invert_penetration(delta, lam, end)
     return A, P, t
 
 
-def _invert_penetration(delta, lam, end):
-    """t on the stable branch with Delta(t) = delta (delta >= end.delta), vectorized."""
-    flat = delta.ravel()
-    if flat.size == 0:
-        return delta.copy()
-    out = np.empty_like(flat)
-    at_end = flat <= end.delta
-    out[at_end] = end.t
-    todo = ~at_end
-    if not np.any(todo):
-        return out.reshape(delta.shape)
-    target = flat[todo]
-    # Bracket in s = log10 t: Delta(s) is decreasing on the stable branch.
-    s_hi = np.log10(end.t) if np.isfinite(end.t) else 2.0
-    while np.isinf(end.t) and _md_curve(10.0**s_hi, lam)[2] > target.min() and s_hi < 300:
+def _inverse_variable(D, end):
+    """y(Delta), falling with s = log10 t and nearly linear in s away from lambda ~ 1 (Delta >> 1
+    or near the branch end), and dy/dDelta: log(Delta - Delta_end) where the branch runs to
+    t = inf, asinh(sqrt(Delta - Delta_end)) where it ends at a minimum of Delta."""
+    x = np.maximum(D - end.delta, 1e-300)
+    if np.isinf(end.t):
+        return np.log(x), 1.0 / x
+    r = np.sqrt(x)
+    return np.arcsinh(r), 0.5 / (r * np.sqrt(1.0 + x))
+
+
+@functools.lru_cache(maxsize=256)
+def _penetration_table(lam: float, s_lo: float, s_hi: float):
+    """y (:func:`_inverse_variable`) and dy/ds on 257 points of s = log10 t in [s_lo, s_hi].
+
+    s(y) is nearly linear, so a cubic-Hermite inverse of this table is good to about 1e-9.
+    """
+    grid = np.linspace(s_lo, s_hi, 257)
+    t = 10.0**grid
+    D, dD = _md_curve(t, lam, True)[2::3]
+    y, dy = _inverse_variable(D, _branch_end(lam))
+    return grid, y, dD * t * np.log(10.0) * dy
+
+
+def _table_range(lam, end, lo, hi):
+    """Ends (s_lo, s_hi) of s = log10 t for the table, with Delta(s_lo) >= hi and (branch to
+    t = inf) Delta(s_hi) <= lo, stepping by 2 from s_hi = 2 and s_lo = min(s_hi - 1, 0): one point
+    of the curve at a time (its fast path for single floats)."""
+    s_hi = float(np.log10(end.t)) if np.isfinite(end.t) else 2.0
+    while np.isinf(end.t) and _md_curve(10.0**s_hi, lam)[2] > lo and s_hi < 300:
         s_hi += 2.0
     s_lo = min(s_hi - 1.0, 0.0)
-    while _md_curve(10.0**s_lo, lam)[2] < target.max():
+    while _md_curve(10.0**s_lo, lam)[2] < hi:
         s_lo -= 2.0
-    grid = np.linspace(s_lo, s_hi, 257)
-    dgrid = _md_curve(10.0**grid, lam)[2]
-    # Table look-up for a bracket and a starting point (dgrid is decreasing).
-    j = np.clip(np.searchsorted(-dgrid, -target), 1, grid.size - 1)
+    return s_lo, s_hi
+
+
+def _invert_penetration(delta, lam, end):
+    """(t, A, P) on the stable branch with Delta(t) = delta (delta >= end.delta), vectorized.
+
+    A cubic-Hermite inverse of a table of y(Delta) (:func:`_inverse_variable`, cached per
+    lambda and range) gives each start; safeguarded Newton on y in log10 t finishes, usually
+    in one or two steps, also next to the branch end where Delta(t) is flat but y is not.
+    """
+    flat = delta.ravel()
+    t_out, A_out, P_out = (np.full_like(flat, x) for x in (end.t, end.A, end.P))
+    todo = np.flatnonzero(flat > end.delta)
+    if todo.size == 0:
+        return (x.reshape(delta.shape) for x in (t_out, A_out, P_out))
+    target = flat[todo]
+    s_lo, s_hi = _table_range(lam, end, float(target.min()), float(target.max()))
+    grid, ygrid, slope = _penetration_table(lam, float(s_lo), float(s_hi))
+    # Table look-up for a bracket [a, b] and a cubic-Hermite start for s(y).
+    y = _inverse_variable(target, end)[0]
+    j = np.clip(np.searchsorted(-ygrid, -y), 1, grid.size - 1)
     a, b = grid[j - 1], grid[j]
-    s = a + (b - a) * (dgrid[j - 1] - target) / (dgrid[j - 1] - dgrid[j])
+    D0, D1 = ygrid[j - 1], ygrid[j]
+    x = (y - D0) / (D1 - D0)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        H = ((2 * x - 3) * x * x + 1) * a + (3 - 2 * x) * x * x * b \
+            + (D1 - D0) * x * (1 - x) * ((1 - x) / slope[j - 1] - x / slope[j])
+    s = np.where(np.isfinite(H) & (H >= a) & (H <= b), H, a + (b - a) * x)
     active = np.arange(target.size)
     for _ in range(100):
         if active.size == 0:
             break
         sa = s[active]
         t = 10.0**sa
-        _, _, D, _, _, dD = _md_curve(t, lam, True)
+        A, P, D, dA, dP, dD = _md_curve(t, lam, True)
         resid = D - target[active]
         # Keep the bracket: Delta decreases with s.
         a[active] = np.where(resid > 0, sa, a[active])
         b[active] = np.where(resid < 0, sa, b[active])
-        slope = dD * t * np.log(10.0)
+        yD, dy = _inverse_variable(D, end)
+        slope = dD * t * np.log(10.0) * dy  # dy/ds
         with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(slope < 0, -resid / slope, np.nan)
+            step = np.where(slope < 0, -(yD - y[active]) / slope, np.nan)
         s_new = sa + step
         bad = ~np.isfinite(s_new) | (s_new < a[active]) | (s_new > b[active])
         s_new = np.where(bad, 0.5 * (a[active] + b[active]), s_new)
         tol = 1e-14 * np.maximum(1.0, np.abs(sa))
-        # Stop at a tiny step, a collapsed bracket, or a residual at rounding level (near
-        # the branch end Delta(t) is flat and the step cannot shrink below rounding).
+        # Stop at a residual at rounding level (near the branch end Delta(t) is flat and the
+        # step cannot shrink below rounding), a tiny step or a collapsed bracket.
         done = ((np.abs(resid) <= 1e-15 * np.maximum(np.abs(D), np.abs(target[active])))
                 | (~bad & (np.abs(step) <= tol)) | (b[active] - a[active] <= tol))
-        s[active] = np.where(done & bad, sa, s_new)
+        # A finished step is tiny: carry A and P along it to first order.
+        dt = np.where(bad, 0.0, 10.0**s_new - t)[done]
+        fin = todo[active[done]]
+        t_out[fin], A_out[fin], P_out[fin] = t[done] + dt, A[done] + dA[done] * dt, P[done] + dP[done] * dt
+        s[active] = s_new
         active = active[~done]
-    out[todo] = 10.0**s
-    return out.reshape(delta.shape)
+    return (x.reshape(delta.shape) for x in (t_out, A_out, P_out))
 
 
 def md_pull_off(lam, control: str = "load") -> BranchPoint:

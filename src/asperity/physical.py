@@ -48,6 +48,7 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 
 import numpy as np
 
@@ -62,19 +63,23 @@ from ._validation import (
     check_scalar_positive,
 )
 from .curves import CurveResult, Model
+from .elastic_plastic import LAWS, plastic_fraction
 from .friction_stress import ConstantShear, FrictionLaw, HurtadoKim
 from .heights import GAUSSIAN, HeightDistribution
+from .interaction import interaction_for_surface
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
 from .physical_results import (
     AREA_FRACTION_CAUTION,
     AREA_FRACTION_LIMIT,
     PHYSICAL_COLUMNS,
+    PHYSICAL_PLASTIC_COLUMNS,
     AreaFractionWarning,
     PhysicalCurve,
     PhysicalPullOff,
     warn_area_fraction,
 )
+from .plasticity import PLASTIC_THRESHOLD, ContactPlasticity, check_yield, plastic_share, resolve_plasticity
 from .quantities import PHYSICAL_PARAMETERS
 from .regimes import adhesion_regime, fuller_tabor_parameter, maugis_parameter, tabor_parameter
 from .surface import Surface, surface_from_groups
@@ -86,6 +91,7 @@ __all__ = [
     "PhysicalCurve",
     "PhysicalPullOff",
     "PHYSICAL_COLUMNS",
+    "PHYSICAL_PLASTIC_COLUMNS",
     "AreaFractionWarning",
     "AREA_FRACTION_CAUTION",
     "AREA_FRACTION_LIMIT",
@@ -98,13 +104,14 @@ __all__ = [
     "fuller_tabor_parameter",
 ]
 
+
 def _out(x):
     """A 0-d result as float, otherwise the array."""
     x = np.asarray(x, dtype=float)
     return float(x) if x.ndim == 0 else x
 
 
-class PhysicalContact:
+class PhysicalContact(ContactPlasticity):
     r"""A real material against a rigid flat through a real rough surface, in SI units.
 
     Parameters
@@ -132,6 +139,28 @@ class PhysicalContact:
         :math:`\gamma = 0`, the Hertz model.  False: :math:`\gamma = 0` (Hertz) whatever ``w``.
     heights : HeightDistribution
         Summit heights in units of :math:`\sigma_s` (default Gaussian, Eq 19).
+    interaction : str, optional
+        Asperity interaction, a name of :data:`asperity.interaction.INTERACTIONS`:
+        ``'none'`` (default, plain GW) or ``'cgp2008'``, the mean-field correction of
+        Ciavarella, Greenwood & Paggi (2008) over this surface's nominal area (non-adhesive:
+        needs ``adhesion=False``); then separations are measured from the undeformed surface.
+    plasticity : str, optional
+        The per-asperity law, a name of :data:`asperity.elastic_plastic.LAWS`: ``'elastic'``
+        (default; Hertz or Maugis-Dugdale) or ``'jackson-green'`` (elastic-plastic, needs a
+        hardness and no adhesion: pass ``adhesion=False``).
+    hardness : float or pint.Quantity, optional
+        Hardness :math:`H` (Pa); default: the material's ``H``.  With the size effect,
+        :math:`H_0` (default: the material's ``H0``).  Gives :attr:`plasticity_index`,
+        :attr:`critical_interference` and, with the elastic law, the yield check.
+    size_effect : bool, optional
+        Nix-Gao indentation size effect, :math:`H = H_0(1 + h^*/\omega)^{1/2}` at each
+        asperity's interference :math:`\omega`.  Default None: on if ``h_star`` is given.
+    h_star : float or pint.Quantity, optional
+        Nix-Gao length :math:`h^*` (m); default: the material's ``h_star``.
+    plastic_threshold : float
+        With the elastic law, a curve on which more than this share of the asperities in
+        contact is past the critical interference warns (:class:`~asperity.PlasticityWarning`);
+        default :data:`~asperity.plasticity.PLASTIC_THRESHOLD` = 0.01.
 
     Raises
     ------
@@ -151,7 +180,9 @@ class PhysicalContact:
     """
 
     def __init__(self, material: Material | str, surface: Surface, *, h=None, friction=None,
-                 adhesion: bool = True, heights: HeightDistribution = GAUSSIAN):
+                 adhesion: bool = True, heights: HeightDistribution = GAUSSIAN, plasticity: str | None = None,
+                 hardness=None, size_effect: bool | None = None, h_star=None,
+                 plastic_threshold: float = PLASTIC_THRESHOLD, interaction=None):
         self.material = as_material(material, "material")
         if not isinstance(surface, Surface):
             raise TypeError(f"surface must be an asperity.surface.Surface, got {type(surface).__name__}")
@@ -167,6 +198,23 @@ class PhysicalContact:
         if not isinstance(heights, HeightDistribution):
             raise TypeError(f"heights must be an asperity.heights.HeightDistribution, got {type(heights).__name__}")
         self.heights = heights
+        s = surface
+        self.interaction = interaction_for_surface(interaction, eta=s.eta, area=s.area, b=self.material.b,
+                                                   sigma_s=s.sigma_s, nu=self.material.nu)
+        if self.interaction.active and self.gamma > 0:
+            raise ValueError(f"interaction {self.interaction.name!r} (Ciavarella, Greenwood & Paggi 2008) is "
+                             "derived for non-adhesive contact; pass adhesion=False or interaction='none'")
+        self.law, self.hardness, self.h_star = resolve_plasticity(self.material, plasticity, hardness,
+                                                                  size_effect, h_star)
+        self.plastic_threshold = check_scalar_positive(plastic_threshold, "plastic_threshold", allow_zero=True)
+        if self.plastic_threshold > 1.0:
+            raise ValueError(f"plastic_threshold must lie in [0, 1], got {plastic_threshold!r}")
+        if LAWS[self.law].plastic:
+            if self.gamma > 0.0:
+                raise ValueError(f"plasticity={self.law!r} has no adhesion, but material {self.material.name!r} has "
+                                 f"a work of adhesion w = {self.w:g} J/m^2 (Maugis-Dugdale cannot be combined with a "
+                                 "plastic core consistently): pass adhesion=False")
+            self._law_spec = LAWS[self.law](self.H_over_E, self.h_star / self.surface.sigma_s)  # validated here
 
     def _friction_law(self, friction) -> FrictionLaw | None:
         if friction is None or isinstance(friction, FrictionLaw):
@@ -251,10 +299,12 @@ class PhysicalContact:
 
     @functools.cached_property
     def model(self) -> Model:
-        """The dimensionless :class:`~asperity.Model` with these alpha, beta, gamma, nu, h/b."""
+        """The dimensionless :class:`~asperity.Model` with these alpha, beta, gamma, nu, h/b and law."""
         kwargs = {} if self.friction is None else {"friction": self.friction}
+        if LAWS[self.law].plastic:
+            kwargs["law"] = self._law_spec
         return Model(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b,
-                     heights=self.heights, **kwargs)
+                     heights=self.heights, interaction=self.interaction, **kwargs)
 
     def to_dict(self) -> dict:
         r"""The contact computed, as plain data for strict JSON (SI units, names of the registry).
@@ -266,7 +316,12 @@ class PhysicalContact:
         ``surface_source``, ``N``; the groups ``alpha``, ``beta``, ``gamma``, ``lambda``,
         ``h_over_b``, the adhesion ``regime``; ``friction`` (``{'law': 'Hurtado-Kim',
         'tau_f1', 'tau_f2', 'a1', 'a2'}`` or ``{'law': 'constant shear', 'tau', 'tau_Pa'}``);
-        the units ``force_scale_N`` (:math:`NGb^2`) and ``area_scale_m2`` (:math:`N\pi b^2`).
+        the units ``force_scale_N`` (:math:`NGb^2`) and ``area_scale_m2`` (:math:`N\pi b^2`);
+        the asperity ``interaction`` (``'none'`` or ``'cgp2008'``); the per-asperity ``law``
+        (``'elastic'`` or ``'jackson-green'``), the hardness ``H_Pa`` (:math:`H_0` with the size
+        effect; None if unknown), the Nix-Gao ``h_star_m`` (0 without the size effect), the
+        plasticity index ``psi`` and ``critical_interference_m`` :math:`\omega_c` (None without
+        a hardness) and ``plastic_threshold`` (the yield check's share).
         """
         s, body = self.surface, self.material.to_dict()
         si = {name: PHYSICAL_PARAMETERS[name].si_name for name in PHYSICAL_PARAMETERS}
@@ -276,7 +331,10 @@ class PhysicalContact:
                 si["eta"]: s.eta, si["area"]: s.area, "surface_source": s.source, "N": self.N,
                 "alpha": self.alpha, "beta": self.beta, "gamma": self.gamma, "lambda": self.lam,
                 "h_over_b": self.h_over_b, "regime": self.regime, "friction": self._friction_dict(),
-                "force_scale_N": self.force_scale, "area_scale_m2": self.area_scale}
+                "force_scale_N": self.force_scale, "area_scale_m2": self.area_scale,
+                "interaction": self.interaction.name, "law": self.law, si["hardness"]: self.hardness,
+                si["h_star"]: self.h_star, "psi": None if self.hardness is None else self.plasticity_index,
+                "critical_interference_m": self.critical_interference, "plastic_threshold": self.plastic_threshold}
 
     def parameters(self) -> dict:
         """Inputs, groups and scales (SI units): :meth:`to_dict`."""
@@ -291,7 +349,8 @@ class PhysicalContact:
         return {"law": repr(law)}
 
     def describe(self) -> str:
-        """The contact computed, in five lines: bodies; moduli and adhesion; surface; groups; friction.
+        """The contact computed, in six lines: bodies; moduli and adhesion; surface; groups; friction;
+        the per-asperity law with the hardness and plasticity index, and the asperity interaction.
 
         Command-line results print these lines at their top (as ``#`` comments).
 
@@ -304,6 +363,8 @@ class PhysicalContact:
         surface: sigma_s = 2 nm, R = 1 um, eta = 1e+12 1/m^2, A0 = 1e-06 m^2, N = 1e+06 summits
         groups: alpha = 0.04472, beta = 155, gamma = 0.2159, lambda = 6.139 (JKR), h/b = 1
         friction: Hurtado-Kim, tau_f1 = 0.02326, tau_f2 = 0.0007752, a1 = 28, a2 = 8e+04 (stresses in G*)
+        law: elastic, H = 188 MPa, psi = 11.5, omega_c = 14.82 pm (notes above 1 % of the contacts
+        past omega_c); interaction: none
         """
         s, f = self.surface, self._friction_dict()
         w = f"w = {format_si(self.w, 'J/m^2')}" if self.w > 0 else "w = 0 (no adhesion: Hertz)"
@@ -327,7 +388,23 @@ class PhysicalContact:
             f"lambda = {self.lam:.4g} ({self.regime if self.gamma else 'no adhesion: Hertz'}), "
             f"h/b = {self.h_over_b:.4g}",
             friction,
+            self._describe_law(),
         ])
+
+    def _describe_law(self) -> str:
+        """The sixth line of :meth:`describe`: law, hardness, plasticity index, interaction."""
+        law = f"law: {self.law}"
+        if self.hardness is None:
+            law += " (no hardness: no yield check)" if self.law == "elastic" else ""
+        else:
+            size = f" (H0), h* = {format_si(self.h_star, 'm')}" if self.h_star > 0 else ""
+            law += f", H = {format_si(self.hardness, 'Pa')}{size}, psi = {self.plasticity_index:.4g}"
+            if self.critical_interference is not None:
+                law += f", omega_c = {format_si(self.critical_interference, 'm')}"
+            if self.law == "elastic":
+                law += (f" (notes above {100 * self.plastic_threshold:g} % of the contacts past omega_c)"
+                        if self.critical_interference is not None else "")
+        return f"{law}; interaction: {self.interaction.name}"
 
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:
@@ -368,9 +445,24 @@ class PhysicalContact:
             d_max = check_scalar_positive(d_max, "d_max")
         po = self.model.pull_off(d_max)
         area = float(self.model.separation_curve([po.d]).area[0]) * self.area_scale if po.exists else 0.0
-        warn_area_fraction(area / self.surface.area, stacklevel=2)
+        warn_area_fraction(area / self.surface.area, stacklevel=2, where=" at pull-off")
         return PhysicalPullOff(force=po.force * self.force_scale, d=po.d * self.surface.sigma_s,
                                exists=po.exists, dimensionless=po, area=area, nominal_area=self.surface.area)
+
+    def cycle(self, *, d_min=None, preload=None, d_max=None, d=None, n=200, stiffness=None, u_in=0.0):
+        """An approach-retract cycle in SI units: :func:`asperity.physical_cycle.physical_cycle` for this contact
+        (``preload`` in N, ``d_min``, ``d_max``, ``d``, ``u_in`` in m, ``stiffness`` in N/m)."""
+        from .physical_cycle import physical_cycle
+
+        return physical_cycle(self, d_min=d_min, preload=preload, d_max=d_max, d=d, n=n, stiffness=stiffness,
+                              u_in=u_in)
+
+    def preload_curve(self, preload, *, d_max=None, u_in=0.0):
+        """Pull-off and energy dissipated against preload (N), in SI units:
+        :func:`asperity.physical_cycle.physical_preload_curve` for this contact."""
+        from .physical_cycle import physical_preload_curve
+
+        return physical_preload_curve(self, preload, d_max=d_max, u_in=u_in)
 
     def _physical(self, curve: CurveResult, *, d=None, P=None) -> PhysicalCurve:
         """The SI curve of a dimensionless one; one :class:`AreaFractionWarning` if its area is too large."""
@@ -378,11 +470,17 @@ class PhysicalContact:
         P = curve.P * fs if P is None else P
         with np.errstate(divide="ignore", invalid="ignore"):
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
+        plastic = curve.plastic  # the plastic law's column; the elastic law is only checked
+        if plastic is None and self.u_c is not None:
+            check_yield(plastic_share(plastic_fraction(curve.d, self.u_c, self.heights), curve.contacts),
+                        threshold=self.plastic_threshold, psi=self.plasticity_index,
+                        critical_interference=self.critical_interference, law=self.law, stacklevel=4)
         result = PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,
                                mu=curve.mu, area=area, pressure=pressure, contacts=curve.contacts * self.N,
                                dimensionless=curve, parameters=self.parameters(),
-                               nominal_area=self.surface.area)
-        warn_area_fraction(result.max_area_fraction, stacklevel=3)  # -> the caller of load_curve/separation_curve
+                               nominal_area=self.surface.area, plastic=None if plastic is None else plastic * self.N)
+        for message in result.validity_warnings():  # -> the caller of load_curve/separation_curve
+            warnings.warn(message, AreaFractionWarning, stacklevel=3)
         return result
 
 

@@ -10,7 +10,10 @@ real contact area :math:`A` well below the nominal area :math:`A_0`.  Every curv
 :data:`AREA_FRACTION_CAUTION`, 10 %: neighbouring contacts interact, the results degrade)
 and ``exceeds_nominal_area`` (above :data:`AREA_FRACTION_LIMIT`, 100 %: more contact than
 surface, not physical).  A call whose result passes 10 % issues one
-:class:`AreaFractionWarning` (:func:`warn_area_fraction`).
+:class:`AreaFractionWarning` (:func:`warn_area_fraction`), an
+:class:`asperity.AsperityWarning` like every validity warning of the library (the command
+line prints it as one ``asperity: note:`` line); :meth:`PhysicalCurve.validity_warnings`
+gives the same sentence as text.
 
 References
 ----------
@@ -26,11 +29,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ._csv import columns_to_csv, columns_to_dataframe
+from ._validation import check_scalar_positive, check_text
+from ._warnings import AsperityWarning
 from .curves import CurveResult, PullOff
-from .quantities import CURVE_COLUMNS
+from .quantities import CURVE_COLUMNS, PLASTIC_COLUMNS
 
 __all__ = [
     "PHYSICAL_COLUMNS",
+    "PHYSICAL_PLASTIC_COLUMNS",
     "AREA_FRACTION_CAUTION",
     "AREA_FRACTION_LIMIT",
     "AreaFractionWarning",
@@ -43,6 +49,8 @@ __all__ = [
 #: Columns of a :class:`PhysicalCurve`: attribute -> (CSV/DataFrame column, SI unit, meaning),
 #: derived from :data:`asperity.quantities.CURVE_COLUMNS`.
 PHYSICAL_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in CURVE_COLUMNS.items()}
+#: The optional column ``plastic`` (number of asperities past the critical interference), as above.
+PHYSICAL_PLASTIC_COLUMNS = {name: (q.si_name, q.si_unit, q.si_meaning) for name, q in PLASTIC_COLUMNS.items()}
 
 
 #: Real over nominal contact area above which a curve warns: neighbouring contacts interact.
@@ -51,28 +59,31 @@ AREA_FRACTION_CAUTION = 0.1
 AREA_FRACTION_LIMIT = 1.0
 
 
-class AreaFractionWarning(UserWarning):
+class AreaFractionWarning(AsperityWarning):
     """The real contact area of a result passes 10 % (or 100 %) of the nominal area.
 
     The Greenwood-Williamson model treats asperities as independent; this needs the real
-    contact area well below the nominal one.  Filter it like any warning, e.g.
+    contact area well below the nominal one.  An :class:`asperity.AsperityWarning` (a
+    :class:`UserWarning`): filter it like any warning, e.g.
     ``warnings.simplefilter("ignore", asperity.AreaFractionWarning)``.
     """
 
 
-def _area_fraction_message(fraction: float) -> str | None:
-    """The warning for a largest real/nominal area ``fraction``, or None below the caution level."""
-    if not fraction > AREA_FRACTION_CAUTION:  # also False for NaN
+def _area_fraction_message(fraction: float, caution: float = AREA_FRACTION_CAUTION, where: str = "") -> str | None:
+    """The warning for a largest real/nominal area ``fraction``, or None up to ``caution``;
+    ``where`` (e.g. ``" from P = 10 N"``) says from which load on it is passed."""
+    if not fraction > caution:  # also False for NaN
         return None
     if fraction > AREA_FRACTION_LIMIT:
-        return (f"the real contact area reaches {fraction:.3g} times the nominal area (more than "
-                f"{AREA_FRACTION_LIMIT:.0%}): the GW model's assumption is broken and these numbers are not physical")
-    return (f"the real contact area reaches {100 * fraction:.3g} % of the nominal area (more than "
-            f"{AREA_FRACTION_CAUTION:.0%}): neighbouring asperities interact and the GW model "
-            "(independent asperities) is unreliable there")
+        return (f"the real contact area reaches {fraction:.3g} times the nominal area (above "
+                f"{100 * max(caution, AREA_FRACTION_LIMIT):g} %{where}): the GW model's assumption is broken and "
+                "these numbers are not physical")
+    return (f"the real contact area reaches {100 * fraction:.3g} % of the nominal area (above {100 * caution:g} %"
+            f"{where}): neighbouring asperities interact and the GW model (independent asperities) is unreliable "
+            "there")
 
 
-def warn_area_fraction(fraction, *, stacklevel: int = 1) -> None:
+def warn_area_fraction(fraction, *, stacklevel: int = 1, where: str = "") -> None:
     """Issue one :class:`AreaFractionWarning` if ``fraction`` passes :data:`AREA_FRACTION_CAUTION`.
 
     Parameters
@@ -81,6 +92,9 @@ def warn_area_fraction(fraction, *, stacklevel: int = 1) -> None:
         Largest real over nominal contact area of a result, >= 0 (NaN: no warning).
     stacklevel : int
         As for :func:`warnings.warn`, counted from the caller of this function (1: the caller).
+    where : str
+        Where the fraction is reached, appended to the limit in the message (e.g.
+        ``" at pull-off"``); default none.
 
     Returns
     -------
@@ -89,7 +103,7 @@ def warn_area_fraction(fraction, *, stacklevel: int = 1) -> None:
     Raises
     ------
     TypeError
-        If ``fraction`` is not a real number or ``stacklevel`` not an integer.
+        If ``fraction`` is not a real number, ``stacklevel`` not an integer or ``where`` not a string.
     """
     if isinstance(fraction, bool) or not isinstance(fraction, int | float | np.integer | np.floating):
         raise TypeError(f"fraction must be a real number, got {type(fraction).__name__} {fraction!r}")
@@ -97,7 +111,8 @@ def warn_area_fraction(fraction, *, stacklevel: int = 1) -> None:
         raise ValueError(f"fraction must be finite and >= 0 (or NaN), got {fraction!r}")
     if isinstance(stacklevel, bool) or not isinstance(stacklevel, int):
         raise TypeError(f"stacklevel must be an integer, got {type(stacklevel).__name__} {stacklevel!r}")
-    message = _area_fraction_message(float(fraction))
+    where = check_text(where, "where")
+    message = _area_fraction_message(float(fraction), where=where)
     if message is not None:
         warnings.warn(message, AreaFractionWarning, stacklevel=stacklevel + 1)
 
@@ -108,7 +123,9 @@ class PhysicalCurve:
 
     ``d`` [m], ``P`` [N], ``F`` [N], ``mu`` [-], ``area`` [m^2], ``pressure`` [Pa] (= P/area),
     ``contacts`` [number of asperities].  ``dimensionless`` is the model's own
-    :class:`~asperity.CurveResult`; ``parameters`` the inputs and groups.
+    :class:`~asperity.CurveResult`; ``parameters`` the inputs and groups.  ``plastic``
+    [number of asperities past the critical interference] is None unless the per-asperity
+    law is elastic-plastic (``plasticity='jackson-green'``); then it is the last column.
     """
 
     d: np.ndarray
@@ -121,6 +138,7 @@ class PhysicalCurve:
     dimensionless: CurveResult = field(repr=False, compare=False)
     parameters: dict = field(default_factory=dict, compare=False)
     nominal_area: float = math.nan
+    plastic: np.ndarray | None = None
 
     @property
     def area_fraction(self) -> np.ndarray:
@@ -146,16 +164,36 @@ class PhysicalCurve:
         somewhere: the GW assumption is broken there."""
         return self.max_area_fraction > AREA_FRACTION_LIMIT
 
+    def validity_warnings(self, limit: float = AREA_FRACTION_CAUTION) -> list[str]:
+        """Reasons to distrust the curve, as sentences: the real contact area above ``limit``
+        (default :data:`AREA_FRACTION_CAUTION`, 10 %) of the nominal area, from the smallest
+        load where it is; the text of the :class:`AreaFractionWarning` the curve issued.  Empty
+        when there are none."""
+        limit = check_scalar_positive(limit, "limit")
+        fraction = np.asarray(self.area_fraction, dtype=float)
+        with np.errstate(invalid="ignore"):
+            over = fraction > limit
+        if not over.any():
+            return []
+        where = f" from P = {float(np.min(np.asarray(self.P)[over])):.4g} N"
+        return [_area_fraction_message(float(np.nanmax(fraction)), limit, where)]
+
     def __len__(self) -> int:
         return int(np.size(self.d))
 
+    def _column_table(self) -> dict:
+        if self.plastic is None:
+            return PHYSICAL_COLUMNS
+        return {**PHYSICAL_COLUMNS, **PHYSICAL_PLASTIC_COLUMNS}
+
     def columns(self) -> dict[str, np.ndarray]:
-        """Column name (with unit, e.g. ``'P_N'``) -> array, in the order of :data:`PHYSICAL_COLUMNS`."""
-        return {col: np.asarray(getattr(self, attr)) for attr, (col, _, _) in PHYSICAL_COLUMNS.items()}
+        """Column name (with unit, e.g. ``'P_N'``) -> array, in the order of :data:`PHYSICAL_COLUMNS`
+        (then ``plastic``, if present)."""
+        return {col: np.asarray(getattr(self, attr)) for attr, (col, _, _) in self._column_table().items()}
 
     def to_dataframe(self):
         """The curve as a :class:`pandas.DataFrame` (needs pandas); units in ``attrs['units']``."""
-        units = {col: unit for col, unit, _ in PHYSICAL_COLUMNS.values()}
+        units = {col: unit for col, unit, _ in self._column_table().values()}
         return columns_to_dataframe(self.columns(), {**self.parameters, "units": units})
 
     def to_csv(self, path_or_buffer=None) -> str | None:

@@ -17,10 +17,15 @@ A :class:`Quantity` carries
   log axes, log sliders, fitted in log10), a ``typical`` range for sliders and sweeps,
   the ``default`` and the ``source`` (equation of the paper, or reference).
 
-Three registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
-:class:`asperity.Model`), :data:`PHYSICAL_PARAMETERS` (inputs of a physical contact, in SI
-units) and :data:`CURVE_COLUMNS` (the columns of every curve).  :func:`quantity` looks a
-name up in all three.
+Six registries: :data:`MODEL_PARAMETERS` (the dimensionless inputs of
+:class:`asperity.Model` and of its per-asperity laws), :data:`PHYSICAL_PARAMETERS` (inputs
+of a physical contact, in SI units), :data:`CURVE_COLUMNS` (the columns of every curve),
+:data:`PLASTIC_COLUMNS` (the column a curve gains when the per-asperity law or the material
+has a critical interference), :data:`CYCLE_QUANTITIES` (the inputs and results of a
+loading cycle, :mod:`asperity.cycle`) and :data:`FIT_PARAMETERS` (parameters only the fits
+have: offsets, the COS and Amontons laws).  :func:`quantity` looks a name up in all six.
+A fit names a physical parameter by its SI name (``w_J_m2``, ``R_m``, ``tau_Pa``), a
+dimensionless one by its name (``alpha``).
 """
 
 from __future__ import annotations
@@ -33,6 +38,10 @@ __all__ = [
     "MODEL_PARAMETERS",
     "PHYSICAL_PARAMETERS",
     "CURVE_COLUMNS",
+    "VALIDATION_COLUMNS",
+    "PLASTIC_COLUMNS",
+    "CYCLE_QUANTITIES",
+    "FIT_PARAMETERS",
     "quantity",
 ]
 
@@ -72,7 +81,7 @@ class Quantity:
         left = "" if self.lo == -_INF else f"{self.lo:g} {'<=' if self.lo_inclusive else '<'} "
         right = "" if self.hi == _INF else f" {'<=' if self.hi_inclusive else '<'} {self.hi:g}"
         if self.hi == _INF and self.lo != -_INF:
-            right = " < inf"
+            right = " <= inf" if self.hi_inclusive else " < inf"
         return f"{left}{self.name}{right}"
 
     def help(self) -> str:
@@ -115,6 +124,13 @@ MODEL_PARAMETERS = _registry(
              typical=(1.0, 1e3), default=28.0, source="Eq 3, Hurtado & Kim 1999"),
     Quantity("a2", r"\bar a_2", "Hurtado-Kim contact radius a/b where region 2 ends (> a1)", lo=0.0, log=True,
              typical=(1e3, 1e7), default=8.0e4, source="Eq 3, Hurtado & Kim 1999"),
+    Quantity("H_over_E", "H/E^*", "hardness over composite modulus H/E* of the elastic-plastic law "
+             "(H0/E* with the size effect); plasticity index psi = alpha/(H/E*)", lo=0.0, hi=0.142,
+             hi_inclusive=True, log=True, typical=(1e-4, 0.14),
+             source="Jackson & Green 2005 (S_y = H/2.84); docs/plasticity.md"),
+    Quantity("h_star_over_sigma", r"h^*/\sigma", "Nix-Gao size-effect length over sigma, h*/sigma; 0 = no "
+             "size effect", lo=0.0, lo_inclusive=True, log=True, typical=(1e-2, 1e4), default=0.0,
+             source="Nix & Gao 1998; docs/plasticity.md"),
 )
 
 #: Inputs of a physical contact (:class:`asperity.physical.PhysicalContact`), SI units.
@@ -139,14 +155,40 @@ PHYSICAL_PARAMETERS = _registry(
              lo_inclusive=True, log=True, typical=(1e-3, 5.0), source="Eq 16"),
     Quantity("h", "h", "Dugdale range of the adhesive stress", unit="m", si_name="h_m", si_unit="m", lo=0.0,
              log=True, typical=(1e-11, 1e-8), source="Eq 14"),
-    Quantity("sigma0", r"\sigma_0", "Dugdale stress w/h of the adhesive traction", unit="Pa", si_name="sigma0_Pa",
-             si_unit="Pa", lo=0.0, log=True, typical=(1e7, 1e11), source="Eq 14"),
     Quantity("rms", r"\sigma", "rms roughness (standard deviation of all surface heights, sqrt(m0))", unit="m",
              si_name="rms_m", si_unit="m", lo=0.0, log=True, typical=(1e-10, 1e-5), source="Nayak 1971"),
     Quantity("alpha_n", r"\alpha_N", "Nayak's bandwidth parameter m0 m4/m2^2 of the surface heights", lo=1.0,
              lo_inclusive=True, log=True, typical=(1.5, 1e3), source="Nayak 1971; McCool 1986"),
     Quantity("tau", r"\tau", "interfacial shear strength", unit="Pa", si_name="tau_Pa", si_unit="Pa", lo=0.0,
              log=True, typical=(1e5, 1e10)),
+    Quantity("hardness", "H", "hardness (mean pressure of a fully plastic contact; H0 with the size effect)",
+             unit="Pa", si_name="H_Pa", si_unit="Pa", lo=0.0, log=True, typical=(1e7, 1.5e11),
+             source="materials table; docs/plasticity.md"),
+    Quantity("h_star", "h^*", "Nix-Gao size-effect length (indentation size effect)", unit="m",
+             si_name="h_star_m", si_unit="m", lo=0.0, lo_inclusive=True, log=True, typical=(1e-8, 1e-5),
+             source="Nix & Gao 1998"),
+    Quantity("tau1", r"\tau_{f1}", "Hurtado-Kim shear strength of small contacts (region 1), tau_f1 G*", unit="Pa",
+             si_name="tau1_Pa", si_unit="Pa", lo=0.0, log=True, typical=(1e6, 1e10), source="Eq 2"),
+    Quantity("tau2", r"\tau_{f2}", "Hurtado-Kim shear strength of large contacts (region 3), tau_f2 G*", unit="Pa",
+             si_name="tau2_Pa", si_unit="Pa", lo=0.0, log=True, typical=(1e4, 1e9), source="Eq 2"),
+    Quantity("sigma0", r"\sigma_0", "Dugdale adhesive stress w/h", unit="Pa", si_name="sigma0_Pa", si_unit="Pa",
+             lo=0.0, log=True, typical=(1e6, 1e11), source="Eq 14"),
+)
+
+#: Parameters of the fits only (:mod:`asperity.fit`): offsets and the empirical friction laws.
+FIT_PARAMETERS = _registry(
+    Quantity("d0", "d_0", "separation offset: the model sees d - d0 (sigma)", unit="sigma", si_name="d0_m",
+             si_unit="m", default=0.0),
+    Quantity("alpha_t", r"\alpha_t", "COS transition parameter, 0 (DMT) to 1 (JKR)", lo=0.0, hi=1.0,
+             lo_inclusive=True, hi_inclusive=True, typical=(0.0, 1.0), source="Carpick et al. 1999, Eq 7"),
+    Quantity("mu0", r"\mu_0", "Amontons friction coefficient of F = mu0 (P + P0)", lo=0.0, log=True,
+             typical=(1e-3, 2.0)),
+    Quantity("P0", "P_0", "Amontons adhesion offset of F = mu0 (P + P0), a load", unit="N G b^2", si_name="P0_N",
+             si_unit="N"),
+    Quantity("F0", "F_0", "COS friction at zero load, tau pi a0^2", unit="N G b^2", si_name="F0_N", si_unit="N",
+             lo=0.0, log=True, source="Carpick et al. 1999"),
+    Quantity("Pc", "P_c", "COS critical load (the pull-off load, negative)", unit="N G b^2", si_name="Pc_N",
+             si_unit="N", hi=0.0, source="Carpick et al. 1999"),
 )
 
 #: Columns of every curve (dimensionless, and SI for a physical contact), in output order.
@@ -168,6 +210,101 @@ CURVE_COLUMNS = _registry(
              si_meaning="number of asperities in contact"),
 )
 
+#: The column a curve gains when its per-asperity law (Jackson-Green) or, for a physical
+#: contact, its material has a critical interference (asperities past it have yielded).
+PLASTIC_COLUMNS = _registry(
+    Quantity("plastic", "n_p/N", "fraction of asperities past the critical interference (yielded) n_p/N",
+             si_name="plastic", si_unit="1", si_meaning="number of asperities past the critical interference "
+             "(yielded)", source="Jackson & Green 2005; docs/plasticity.md"),
+)
+
+
+def _column(name: str, symbol: str, unit: str, meaning: str, log: bool = False) -> Quantity:
+    """An SI-only column (its name is its SI name)."""
+    return Quantity(name, symbol, meaning, unit=unit, si_name=name, si_unit=unit, si_meaning=meaning, log=log)
+
+
+#: Columns of a side-by-side check against a boundary-element solution
+#: (:class:`asperity.validation.SurfaceValidation`), SI units, in output order.  ``spectral``
+#: and ``detected`` are the two estimates of the GW summit parameters (:mod:`asperity.topography`).
+VALIDATION_COLUMNS = _registry(
+    _column("P_N", "P", "N", "total normal force on the scanned area, compressive > 0", log=True),
+    _column("p_Pa", r"\bar p", "Pa", "nominal pressure P/A0", log=True),
+    _column("fraction_bem", "A/A_0", "1", "boundary-element real contact area over nominal area", log=True),
+    _column("area_bem_m2", "A_{BEM}", "m^2", "boundary-element real contact area (contact pixels x pixel area)",
+            log=True),
+    _column("area_spectral_m2", "A_{GW}", "m^2", "statistical-model real contact area, spectral summit parameters",
+            log=True),
+    _column("area_detected_m2", "A_{GW}", "m^2", "statistical-model real contact area, detected summit parameters",
+            log=True),
+    _column("dev_spectral", r"A_{GW}/A_{BEM}-1", "1", "deviation of the spectral model area from the BEM area"),
+    _column("dev_detected", r"A_{GW}/A_{BEM}-1", "1", "deviation of the detected model area from the BEM area"),
+    _column("gap_bem_m", r"\bar g", "m", "boundary-element mean gap between the flat and the deformed surface"),
+    _column("gap_spectral_m", r"\bar g", "m", "statistical-model mean gap (local separation + mean summit "
+            "height), spectral"),
+    _column("gap_detected_m", r"\bar g", "m", "statistical-model mean gap (local separation + mean summit "
+            "height), detected"),
+    _column("sep_bem_m", "s", "m", "approach: distance of the flat from the undeformed mean plane "
+            "(non-periodic BEM only; NaN for periodic)"),
+    _column("sep_spectral_m", "s", "m", "statistical-model distance of the flat from the undeformed mean plane, "
+            "spectral"),
+    _column("sep_detected_m", "s", "m", "statistical-model distance of the flat from the undeformed mean plane, "
+            "detected"),
+    _column("spots_bem", "n_{spots}", "1", "boundary-element number of contact spots (connected contact regions)"),
+    _column("contacts_spectral", "n", "1", "statistical-model number of asperities in contact, spectral"),
+    _column("contacts_detected", "n", "1", "statistical-model number of asperities in contact, detected"),
+    _column("iterations_bem", "it", "1", "constrained conjugate-gradient iterations of the BEM solve"),
+)
+
+
+#: Inputs and results of a loading cycle (:mod:`asperity.cycle`): dimensionless, and SI for a
+#: physical contact (:mod:`asperity.physical_cycle`).
+CYCLE_QUANTITIES = _registry(
+    Quantity("d_min", r"d_{min}/\sigma", "closest approach of the cycle d_min/sigma", unit="sigma",
+             si_name="d_min_m", si_unit="m", si_meaning="closest approach (separation at the turning point)",
+             lo=-1.0e4, lo_inclusive=True),
+    Quantity("d_max", r"d_{max}/\sigma", "start and end of the cycle d_max/sigma (default: 10 beyond the end of "
+             "the asperities' stable branch)", unit="sigma", si_name="d_max_m", si_unit="m",
+             si_meaning="separation where the cycle starts and ends"),
+    Quantity("preload", r"P_{pre}/NGb^2", "preload: the largest compressive load P/(N G b^2), reached at the "
+             "closest approach", unit="N G b^2", si_name="preload_N", si_unit="N",
+             si_meaning="largest compressive load of the cycle", lo=0.0, log=True),
+    Quantity("stiffness", r"k\sigma/NGb^2", "instrument spring stiffness k sigma/(N G b^2); inf: displacement "
+             "control", unit="N G b^2/sigma", si_name="stiffness_N_m", si_unit="N/m",
+             si_meaning="stiffness of the instrument's spring (cantilever)", lo=0.0, hi=_INF, hi_inclusive=True,
+             log=True, default=_INF),
+    Quantity("u_in", r"\bar u_{in}", "penetration (z - d)/sigma at which an approaching asperity jumps into "
+             "contact, in [u_end, 0]", unit="sigma", si_name="u_in_m", si_unit="m",
+             si_meaning="penetration at which an approaching asperity jumps into contact", lo=-1.0e4, hi=0.0,
+             lo_inclusive=True, hi_inclusive=True, default=0.0, source="decisions.md 11"),
+    Quantity("d_base", r"Z/\sigma", "displacement of the instrument spring's base Z/sigma = d - P/k", unit="sigma",
+             si_name="d_base_m", si_unit="m", si_meaning="displacement of the instrument spring's base, d - P/k"),
+    Quantity("pull_off", r"P_{off}/NGb^2", "pull-off force on retraction |P|/(N G b^2)", unit="N G b^2",
+             si_name="pull_off_N", si_unit="N", si_meaning="pull-off force on retraction", lo=0.0,
+             lo_inclusive=True, log=True),
+    Quantity("d_pull_off", r"d_{off}/\sigma", "separation of the pull-off on retraction", unit="sigma",
+             si_name="d_pull_off_m", si_unit="m", si_meaning="separation of the pull-off on retraction"),
+    Quantity("energy", r"E/NGb^2\sigma", "energy dissipated per cycle E/(N G b^2 sigma)", unit="N G b^2 sigma",
+             si_name="energy_J", si_unit="J", si_meaning="energy dissipated per cycle", lo=0.0,
+             lo_inclusive=True, log=True),
+    Quantity("energy_per_area", "E/A_0", "energy dissipated per cycle and nominal area", unit="J/m^2",
+             si_name="energy_J_m2", si_unit="J/m^2", si_meaning="energy dissipated per cycle and nominal area",
+             lo=0.0, lo_inclusive=True, log=True),
+    Quantity("loop_energy", r"e/Gb^2\sigma", "energy one asperity dissipates through the whole loop "
+             "e/(G b^2 sigma)", unit="G b^2 sigma", si_name="loop_energy_J", si_unit="J",
+             si_meaning="energy one asperity dissipates through the whole loop", lo=0.0, lo_inclusive=True),
+    Quantity("loop_fraction", "n_{loop}/N", "fraction of asperities through the whole loop", si_name="loop_count",
+             si_unit="1", si_meaning="number of asperities through the whole loop", lo=0.0, hi=1.0,
+             lo_inclusive=True, hi_inclusive=True),
+    Quantity("jump_energy", r"E_{jump}/NGb^2\sigma", "energy lost in the instrument's jumps E/(N G b^2 sigma)",
+             unit="N G b^2 sigma", si_name="jump_energy_J", si_unit="J",
+             si_meaning="energy lost in the instrument's jumps", lo=0.0, lo_inclusive=True),
+    Quantity("friction_hysteresis", r"\oint F/NGb^2\sigma", "friction hysteresis: integral of F_retract - "
+             "F_approach over the separation, per N G b^2 sigma", unit="N G b^2 sigma",
+             si_name="friction_hysteresis_N_m", si_unit="N m",
+             si_meaning="integral of F_retract - F_approach over the separation", lo=0.0, lo_inclusive=True),
+)
+
 
 def quantity(name: str) -> Quantity:
     """The :class:`Quantity` called ``name`` in any registry (model parameters first).
@@ -179,8 +316,10 @@ def quantity(name: str) -> Quantity:
     """
     if not isinstance(name, str):
         raise TypeError(f"name must be a string, got {type(name).__name__} {name!r}")
-    for registry in (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS):
+    registries = (MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS, PLASTIC_COLUMNS, CYCLE_QUANTITIES,
+                  FIT_PARAMETERS)
+    for registry in registries:
         if name in registry:
             return registry[name]
-    known = sorted({*MODEL_PARAMETERS, *PHYSICAL_PARAMETERS, *CURVE_COLUMNS})
+    known = sorted({name for registry in registries for name in registry})
     raise ValueError(f"unknown quantity {name!r}; known: {', '.join(known)}")

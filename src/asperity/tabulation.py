@@ -48,7 +48,7 @@ def check_separation(d, name="d", d_max=D_MAX):
     if not D_MIN < d_max <= D_MAX + U_END_LIMIT:
         raise ValueError(f"d_max must lie in ({D_MIN:g}, {D_MAX + U_END_LIMIT:g}], got {d_max!r}")
     d = as_float_array(d, name)
-    if np.any((d < D_MIN) | (d > d_max)):
+    if ((d < D_MIN) | (d > d_max)).any():
         raise ValueError(f"{name} (separation d/sigma) must lie in [{D_MIN:g}, d_max = {d_max:.6g}], "
                          f"got values from {d.min():g} to {d.max():g}")
     return d
@@ -168,7 +168,7 @@ class Tabulation:
             j = int(np.searchsorted(ds, ds[i] + _BLOCK_SPAN, side="right"))
             j = min(j, i + _BLOCK_ROWS)
             block = ds[i:j]
-            lo, hi = -block[-1] - z_top, max(self.law.u_end, -block[0]) + z_top
+            lo, hi = -float(block[-1]) - z_top, max(self.law.u_end, -float(block[0])) + z_top
             for k, part in enumerate(self._block_sums(block, lo, hi, order)):
                 out[k][order_idx[i:j]] = part
             i = j
@@ -176,12 +176,17 @@ class Tabulation:
 
     def _block_sums(self, block, lo, hi, order):
         h = self.heights
-        a, b = np.searchsorted(self.direct_u, [lo, hi])
+        if block.size <= 2:  # a Newton step's separation: one density row over the nodes in reach
+            a, b = self.u.searchsorted(lo), self.u.searchsorted(hi)
+            return h.weighted_sums(block, self.u[a:b], self.weights[a:b], order)
+        a, b = self.direct_u.searchsorted(lo), self.direct_u.searchsorted(hi)
         parts = [h.weighted_sums(block, self.direct_u[a:b], self.direct_w[a:b], order)]
-        a, b = np.searchsorted(self.centers, [lo - 1.0, hi + 1.0])
+        a, b = self.centers.searchsorted(lo - 1.0), self.centers.searchsorted(hi + 1.0)
         if b > a:
             parts.append(h.panel_sums(block, self.centers[a:b], self.offsets, self.panel_w[a:b], order))
-        return [sum(p[k] for p in parts) for k in range(order + 1)]
+        if len(parts) == 1:
+            return parts[0]
+        return [p + q for p, q in zip(*parts, strict=True)]
 
     def evaluate(self, d):
         """Dict of contacts, P, F, area at separations ``d`` (any shape)."""

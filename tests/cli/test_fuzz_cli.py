@@ -11,9 +11,13 @@ invalid value or removed.  The contract:
 * status 0: every stderr line is an ``asperity: note: ...``; JSON output is strict (no NaN
   or Infinity) and CSV output has a header and rows.
 
-Twenty command lines per command by default; ``ASPERITY_FUZZ_EXAMPLES=N`` draws N.
+Twenty command lines per command by default, the same on every run (``ASPERITY_FUZZ_RANDOM=1``
+draws new ones); ``ASPERITY_FUZZ_EXAMPLES=N`` draws N.
 ``asperity reproduce`` is left out (a valid run takes seconds; its bad values are tested in
-tests/cli/test_args.py), and so is ``--plot`` (drawing; tests/cli/test_plot.py).
+tests/cli/test_args.py), and so is ``--plot`` (drawing; tests/cli/test_plot.py).  A few
+options keep their base value (:data:`FIXED`): those that start worker processes, wait
+for a network address or print a progress report.  ``asperity explore`` runs with its
+server stopped as soon as it has started and without a browser (:func:`_no_serving`).
 """
 
 from __future__ import annotations
@@ -37,6 +41,11 @@ pytest.importorskip("pint")
 SKIPPED_OPTIONS = {"help": "prints the help", "plot": "draws a figure (tests/cli/test_plot.py)",
                    "version": "prints the version"}
 SKIPPED_COMMANDS = {"reproduce": "a valid run takes seconds; its bad values are in tests/cli/test_args.py"}
+#: command -> {dest: value} options never changed nor removed (value None: a flag kept), with the reason.
+FIXED = {
+    "sweep": {"scheduler": "serial"},  # 'local' starts worker processes, an address waits for a scheduler
+    "bem": {"quiet": None},  # without it the progress report is on stderr (tests/cli/test_bem.py)
+}
 
 
 @functools.cache
@@ -50,8 +59,19 @@ def _files(tmp: str) -> dict[str, str]:
     np.save(scan, topo.heights() * 1e9)
     empty = os.path.join(tmp, "empty.txt")
     open(empty, "w").close()
+    friction = os.path.join(tmp, "friction.csv")  # friction F against load P (dimensionless)
+    with open(friction, "w") as fh:
+        fh.write("P,F\n" + "".join(f"{p},{0.3 * (p + 1.0)}\n" for p in np.linspace(0.5, 5.0, 8).tolist()))
+    sets = os.path.join(tmp, "sets.csv")
+    with open(sets, "w") as fh:
+        fh.write("alpha,beta,gamma\n0.01,1000,0.001\n0.003,1000,0\n")
+    from asperity.sweeps import sweep
+
+    store = os.path.join(tmp, "map.nc")
+    sweep(alpha=[0.003, 0.01], beta=1000.0, gamma=[0.0, 1e-3], P=[1.0, 10.0], scheduler="serial",
+          out=store).close()
     return {"scan": scan, "dir": tmp, "empty": empty, "missing": os.path.join(tmp, "missing.npy"),
-            "out": os.path.join(tmp, "out.txt")}
+            "out": os.path.join(tmp, "out.txt"), "friction": friction, "sets": sets, "store": store}
 
 
 def valid_values(tmp: str) -> dict[str, list[str]]:
@@ -69,7 +89,41 @@ def valid_values(tmp: str) -> dict[str, list[str]]:
         "d_max": ["5", "8"], "lam": ["1", "0.5"], "delta": ["0,1", "-0.5:1:4"], "pulloff": [None],
         "format": ["json", "csv", "table"], "output": [f["out"]], "sources": [None], "file": [f["scan"]],
         "fill_undefined": [None],
+        # plasticity (every physical command): dimensionless H/E* and h*/sigma, or with units
+        "law": ["elastic", "jackson-green"], "hardness": ["0.005", "1GPa"], "h_star": ["0.4", "1.6um"],
+        "size_effect": [None], "plastic_threshold": ["0.01", "0.2"],
+        # cycle (dimensionless, or with units for a physical contact)
+        "dmin": ["0", "-0.5", "0.5nm"], "preload": ["10", "5mN"], "dmax": ["8", "10nm"],
+        "stiffness": ["10", "1e4N/m"], "u_in": ["0", "0.5"], "points": ["20", "40"],
+        # fit
+        "data": [f["friction"]], "model": ["amontons", "cos"], "compare": ["amontons,cos"], "vary": ["mu0"],
+        "fix": ["P0=0"], "start": ["mu0=0.5"], "bounds": ["mu0=0:2", "mu0=:"], "shared": ["mu0"],
+        "weights": ["auto", "none", "relative"], "loss": ["linear", "soft_l1", "huber"],
+        "ci": ["auto", "wald", "profile"], "kind": ["friction"], "load_unit": ["nN", "N"],
+        "friction_unit": ["nN"], "separation_unit": ["nm"], "drop_nan": [None],
+        # bem
+        "grid": ["16", "24"], "periodic": [None], "interaction": ["none", "cgp2008"], "quiet": [None],
+        # sweep and plot
+        "out": [os.path.join(tmp, "sweep.nc")], "resume": [None], "scheduler": ["serial"],
+        "chunk_sets": ["1", "64"], "progress": [None], "store": [f["store"]], "x": ["alpha", "gamma"],
+        "y": ["gamma", "alpha"], "z": ["pull_off", "mu"], "at": ["P=10", "P=1"],
+        # explore (served and stopped at once: _no_serving)
+        "port": ["0"], "host": ["127.0.0.1"], "no_browser": [None],
     }
+
+
+#: command -> {dest: valid values} where a command's option takes other values than the same dest elsewhere.
+def command_values(tmp: str) -> dict[str, dict[str, list[str]]]:
+    f = _files(tmp)
+    return {"sweep": {"points": [f["sets"]], "material": ["Au", "Au,Si"], "sigma_s": ["2nm", "1nm,2nm"],
+                      "alpha": ["0.01", "0.003,0.01"], "gamma": ["1e-3", "0,1e-3"]},
+            "fit": {"format": ["json", "table"]},
+            "bem": {"load": ["1mN,10mN", "1mN:10mN:3"]},
+            "plot": {"output": [os.path.join(tmp, "map.png")]}}
+
+
+def values_for(tmp: str, command: str) -> dict[str, list[str]]:
+    return {**valid_values(tmp), **command_values(tmp).get(command, {})}
 
 
 def invalid_values(tmp: str) -> list[str]:
@@ -98,7 +152,8 @@ MODEL = ["--alpha", "0.01", "--beta", "1000", "--gamma", "1e-3"]
 
 
 def bases(tmp: str) -> dict[str, list[list[str]]]:
-    scan = _files(tmp)["scan"]
+    f = _files(tmp)
+    scan = f["scan"]
     return {
         "load": [[*MODEL, "--P", "1,10"], [*PHYSICAL, "--load", "1mN,10mN"]],
         "separation": [[*MODEL, "--d", "0,1"], [*PHYSICAL, "--separation", "0nm,2nm"]],
@@ -106,6 +161,17 @@ def bases(tmp: str) -> dict[str, list[list[str]]]:
         "md": [["--lam", "1", "--delta", "0,1"], ["--lam", "1", "--pulloff"]],
         "surface": [[scan, "--size", "2um,2um", "--unit", "nm"]],
         "materials": [[]],
+        "cycle": [[*MODEL, "--preload", "10", "--points", "20"], [*PHYSICAL, "--preload", "5mN", "--points", "20"]],
+        "fit": [[f["friction"], "--model", "amontons"], [f["friction"], "--model", "cos", "--format", "json"]],
+        "bem": [[scan, "--size", "2um,2um", "--unit", "nm", "--material", "Au", "--load", "1mN,10mN", "--grid",
+                 "16", "--quiet"]],
+        "sweep": [["--alpha", "0.003,0.01", "--beta", "1000", "--gamma", "1e-3", "--P", "1,10", "--out",
+                   os.path.join(tmp, "sweep.nc"), "--scheduler", "serial"],
+                  ["--material", "Au", "--sigma-s", "1nm,2nm", "--R", "1um", "--eta", "1e12/m^2", "--area", "1mm^2",
+                   "--load", "1mN,10mN", "--out", os.path.join(tmp, "physical.nc"), "--scheduler", "serial"]],
+        "plot": [[f["store"], "--x", "alpha", "--y", "gamma", "--z", "pull_off"],
+                 [f["store"], "--x", "gamma", "--y", "alpha", "--z", "mu", "--at", "P=10"]],
+        "explore": [["--no-browser", "--port", "0"]],
     }
 
 
@@ -141,6 +207,8 @@ def _argv(command: str, values: dict[str, str | None], acts: dict[str, argparse.
 
 
 #: Examples per test (ASPERITY_FUZZ_EXAMPLES overrides).
+#: The same examples on every run (a suite that passes keeps passing); ASPERITY_FUZZ_RANDOM=1 draws new ones.
+DERANDOMIZE = not os.environ.get("ASPERITY_FUZZ_RANDOM")
 EXAMPLES = int(os.environ.get("ASPERITY_FUZZ_EXAMPLES", 20))
 
 
@@ -151,25 +219,27 @@ def tmp(tmp_path_factory):
 
 
 def test_every_option_has_valid_values(tmp):
-    known = valid_values(tmp)
     missing = [f"{name} {dest}" for name, parser in commands().items() for dest in options(parser)
-               if dest not in known]
+               if dest not in values_for(tmp, name)]
     assert not missing, f"add valid values to valid_values() in tests/cli/test_fuzz_cli.py for: {missing}"
     assert set(bases(tmp)) == set(commands()), "add a valid base command line for each command to bases()"
 
 
 @pytest.mark.parametrize("command", sorted(set(commands())))
-@settings(max_examples=EXAMPLES, deadline=None,
+@settings(max_examples=EXAMPLES, deadline=None, derandomize=DERANDOMIZE,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(data=st.data())
 def test_command_lines_end_cleanly(capsys, monkeypatch, tmp, command, data):
     monkeypatch.chdir(tmp)  # -o with a strange (valid) name writes a file here, not in the clone
+    if command == "explore":
+        _no_serving(monkeypatch)
     parser = commands()[command]
     acts = options(parser)
+    fixed = FIXED.get(command, {})
     values = _as_dict(data.draw(st.sampled_from(bases(tmp)[command]), label="base"), acts)
-    valid, invalid = valid_values(tmp), invalid_values(tmp)
+    valid, invalid = values_for(tmp, command), invalid_values(tmp)
     for _ in range(data.draw(st.integers(1, 3), label="changes")):
-        dest = data.draw(st.sampled_from(sorted(acts)), label="option")
+        dest = data.draw(st.sampled_from(sorted(set(acts) - set(fixed))), label="option")
         if acts[dest].nargs == 0:
             change = data.draw(st.sampled_from(["add", "remove"]), label=dest)
             if change == "add":
@@ -183,6 +253,11 @@ def test_command_lines_end_cleanly(capsys, monkeypatch, tmp, command, data):
             values.pop(dest, None)
         else:
             values[dest] = data.draw(st.sampled_from(valid[dest] if change == "valid" else invalid), label=dest)
+    values.update(fixed)
+    if command == "sweep":  # each example a new sweep (an existing file of other arguments is refused)
+        for name in ("sweep.nc", "physical.nc"):
+            if os.path.exists(os.path.join(tmp, name)):
+                os.remove(os.path.join(tmp, name))
     argv = _argv(command, values, acts)
     code, out, err = run(capsys, *argv)
     lines = err.strip().splitlines()
@@ -193,11 +268,33 @@ def test_command_lines_end_cleanly(capsys, monkeypatch, tmp, command, data):
         assert out == "", (argv, out)
         return
     assert all(line.startswith("asperity: note: ") for line in lines), (argv, err)
+    if "format" not in acts:  # sweep, plot, explore write files or serve: a line saying so
+        assert out.strip(), (argv, out)
+        return
     if "output" in values:
         with open(values["output"], encoding="utf-8") as fh:
             out = fh.read()
-    fmt = values.get("format", "csv" if command != "surface" else "json")
+    fmt = values.get("format", acts["format"].default or ("json" if command == "surface" else "csv"))
     if fmt == "json":
         strict_json(out)
     elif fmt == "csv":
         assert rows_of(out) or command == "materials", (argv, out)
+
+
+def _no_serving(monkeypatch) -> None:
+    """``asperity explore`` without a browser, stopping its server as soon as it has started."""
+    pytest.importorskip("bokeh")
+    import webbrowser
+
+    from asperity.explorer import server
+
+    start = server.start_server
+
+    def start_and_stop(port, host):
+        started = start(port, host)
+        started.io_loop.add_callback(started.io_loop.stop)
+        return started
+
+    monkeypatch.setattr(server, "start_server", start_and_stop)
+    monkeypatch.setattr(server, "_warm_up", lambda: None)
+    monkeypatch.setattr(webbrowser, "open", lambda url: True)

@@ -55,7 +55,8 @@ def test_every_command_module_is_registered():
     parser = build_parser()
     sub = next(a for a in parser._actions if a.dest == "command")
     assert list(sub.choices) == list(COMMANDS)
-    assert set(COMMANDS) == {"reproduce", "separation", "load", "pulloff", "surface", "materials", "md"}
+    assert set(COMMANDS) == {"reproduce", "separation", "load", "pulloff", "cycle", "surface", "materials", "md",
+                             "bem", "explore", "sweep", "plot", "fit"}
     for name, module in COMMANDS.items():
         assert module.NAME == name and module.HELP and callable(module.add_arguments) and callable(module.run)
 
@@ -103,9 +104,35 @@ def test_startup_imports_no_numerics(code):
     (["reproduce", "--out", "{tmp}/paper"], "matplotlib", "plot"),
     (["load", *AU, "--load", "1mN"], "pint", "units"),
     (["surface", "{tmp}/scan.x3p"], "SurfaceTopography", "topography"),
+    (["sweep", *MODEL, "--P", "1", "--out", "{tmp}/m.nc"], "xarray", "sweep"),
+    (["sweep", *MODEL, "--P", "1", "--out", "{tmp}/m.nc", "--scheduler", "serial"], "netCDF4", "sweep"),
+    (["plot", "{tmp}", "--x", "alpha", "--y", "gamma", "--z", "mu"], "xarray", "sweep"),
 ])
 def test_missing_optional_dependency_is_one_line(capsys, monkeypatch, tmp_path, argv, module, extra):
     monkeypatch.setitem(sys.modules, module, None)  # makes "import module" fail
     code, out, err = run(capsys, *(a.replace("{tmp}", str(tmp_path)) for a in argv))
     assert one_line_error(code, err, f"needs {module}: pip install 'asperity[{extra}]'")
     assert out == "" and list(tmp_path.iterdir()) == []
+
+
+def test_library_warnings_become_one_note_line_each(capsys):
+    """Every command prints the library's warnings (AsperityWarning) as notes, once each; others pass on."""
+    import warnings
+
+    from asperity import AsperityWarning, PlasticityWarning
+    from asperity.cli import run_with_notes
+
+    def run(args):
+        warnings.warn(PlasticityWarning("yielded"), stacklevel=1)
+        warnings.warn(PlasticityWarning("yielded"), stacklevel=1)
+        warnings.warn(AsperityWarning("other note"), stacklevel=1)
+
+    run_with_notes(run, None)
+    err = capsys.readouterr().err.splitlines()
+    assert err == ["asperity: note: yielded", "asperity: note: other note"]
+
+    def foreign(args):
+        warnings.warn("not ours", RuntimeWarning, stacklevel=1)
+
+    with pytest.raises(RuntimeWarning, match="not ours"):  # filterwarnings=error still applies to others
+        run_with_notes(foreign, None)

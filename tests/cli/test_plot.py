@@ -103,3 +103,75 @@ def test_tensile_loads_plot_on_a_linear_axis(capsys, tmp_path, drawn):
     mu_ax, area_ax = drawn[0].axes
     assert code == 0 and area_ax.get_xscale() == "linear" and mu_ax.get_xscale() == "log"
     assert mu_ax.get_lines()[0].get_xdata().min() > 0  # mu only where it is defined
+
+
+# -- asperity plot: a heat map of a sweep ----------------------------------------------------------
+@pytest.fixture(scope="module")
+def sweep_file(tmp_path_factory):
+    pytest.importorskip("xarray")
+    pytest.importorskip("netCDF4")
+    import numpy as np
+
+    import asperity
+
+    out = tmp_path_factory.mktemp("sweep") / "map.nc"
+    asperity.sweep(alpha=np.geomspace(1e-3, 0.1, 4), beta=1000.0, gamma=np.array([0.0, 1e-4, 1e-3]),
+                   P=np.array([1.0, 10.0]), out=str(out), scheduler="serial").close()
+    return out
+
+
+@pytest.mark.parametrize("extra", [["--z", "pull_off"], ["--z", "mu", "--at", "P=9"]])
+def test_heat_map_of_a_sweep(capsys, tmp_path, sweep_file, extra):
+    pytest.importorskip("matplotlib")
+    path = tmp_path / "map.png"
+    code, out, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", *extra, "-o", str(path))
+    assert code == 0, err
+    assert path.read_bytes()[:4] == b"\x89PNG" and out.strip() == f"wrote {path}"
+
+
+def test_heat_map_axes_and_colour_bar(sweep_file, tmp_path):
+    # Log axes where the registry says so, and the colour bar labelled with the units of the file.
+    pytest.importorskip("matplotlib")
+    import xarray as xr
+
+    from asperity.cli import plot
+
+    seen = {}
+    from matplotlib.figure import Figure
+
+    savefig = Figure.savefig
+
+    def capture(fig, *args, **kwargs):
+        ax, cax = fig.axes
+        seen.update(x=ax.get_xscale(), y=ax.get_yscale(), label=cax.get_ylabel(), xlabel=ax.get_xlabel())
+        return savefig(fig, *args, **kwargs)
+    Figure.savefig = capture
+    try:
+        with xr.open_dataset(sweep_file) as ds:
+            plot.heat_map(ds, "alpha", "gamma", "pull_off", {}, str(tmp_path / "a.png"), "png")
+    finally:
+        Figure.savefig = savefig
+    # gamma holds 0: no log axis for it; alpha spans decades
+    assert seen["x"] == "log" and seen["y"] == "linear"
+    assert seen["label"] == "pull_off [N G b^2]" and seen["xlabel"] == r"$\alpha$"
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["--x", "alpha", "--y", "gamma", "--z", "nope"], "not a variable"),
+    (["--x", "alpha", "--y", "beta", "--z", "pull_off"], "not a dimension"),
+    (["--x", "alpha", "--y", "alpha", "--z", "pull_off"], "different"),
+    (["--x", "alpha", "--y", "gamma", "--z", "mu"], "fix it with --at P=VALUE"),
+    (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P"], "NAME=VALUE"),
+    (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "Q=1"], "not another dimension"),
+])
+def test_heat_map_errors(capsys, tmp_path, sweep_file, argv, needle):
+    pytest.importorskip("matplotlib")
+    path = tmp_path / "x.png"
+    code, _, err = run(capsys, "plot", str(sweep_file), *argv, "-o", str(path))
+    assert one_line_error(code, err, needle), err
+    assert not path.exists()
+
+
+def test_heat_map_of_a_missing_file(capsys, tmp_path):
+    code, _, err = run(capsys, "plot", str(tmp_path / "none.nc"), "--x", "a", "--y", "b", "--z", "c")
+    assert one_line_error(code, err, "no such sweep")

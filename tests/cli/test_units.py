@@ -17,6 +17,10 @@ from asperity.surface import Surface
 
 from .helpers import run, strict_json
 
+#: Gold asperities of these surfaces yield (plasticity index psi ~ 23): the elastic model
+#: warns (asperity.PlasticityWarning), tested in tests/test_plasticity.py, not here.
+pytestmark = pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
+
 pytest.importorskip("pint")
 
 #: The reference contact: option -> (text, SI value); each case replaces one of them.

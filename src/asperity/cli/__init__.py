@@ -1,9 +1,13 @@
 """The ``asperity`` command line.
 
 ``asperity reproduce`` recomputes the paper's figures and Table 1; ``separation``,
-``load``, ``pulloff`` and ``md`` compute curves for one's own parameters; ``surface``
-reads a measured surface and ``materials`` lists the materials table.  Every error
-prints one line and exits with status 2.
+``load``, ``pulloff`` and ``md`` compute curves for one's own parameters; ``cycle`` an
+approach-retract cycle (hysteresis, energy dissipated, pull-off); ``fit`` fits a model to
+measured data; ``surface`` reads a measured surface, ``bem`` checks the model against a
+boundary-element contact of it, ``materials`` lists the materials table, ``sweep`` runs
+grids of parameter sets (NetCDF/Zarr, on Dask) and ``plot`` draws them as heat maps;
+``explore`` serves a live view of the model to the browser.  Every error prints one line
+and exits with status 2.
 
 One module per command (:data:`COMMANDS`), each with ``NAME``, ``HELP``,
 ``DESCRIPTION`` (and optionally ``EPILOG``), ``add_arguments(parser)`` and ``run(args)``;
@@ -21,13 +25,14 @@ import warnings
 
 from .._optional import MissingDependency
 from .._version import __version__
-from . import load, materials, md, pulloff, reproduce, separation, surface
+from . import bem, cycle, explore, fit, load, materials, md, plot, pulloff, reproduce, separation, surface, sweep
 from ._args import UNITS, UsageError, join_negative_lists, parse_list
 
 __all__ = ["main", "build_parser", "parse_list", "UsageError", "COMMANDS"]
 
 #: Command name -> its module, in the order ``asperity --help`` lists them.
-COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, surface, materials, md)}
+COMMANDS = {module.NAME: module for module in (reproduce, separation, load, pulloff, cycle, fit, surface, bem,
+                                               materials, md, sweep, plot, explore)}
 
 
 class _Parser(argparse.ArgumentParser):
@@ -54,18 +59,24 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _notes(caught) -> None:
-    """The warnings a command raised: asperity's own as one ``asperity: note:`` line each (once
-    per message), any other re-issued as it came (so tests, which turn warnings into errors, see it)."""
-    seen = set()
-    for w in caught:
-        if w.category.__module__.split(".")[0] == "asperity":
-            message = " ".join(str(w.message).split())
-            if message not in seen:
-                seen.add(message)
-                print(f"asperity: note: {message}", file=sys.stderr)
-        else:
-            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
+def run_with_notes(run, args) -> None:
+    """Run a command; print each of the library's warnings (:class:`asperity.AsperityWarning`)
+    as one ``asperity: note:`` line on standard error (once per distinct message, after the
+    command succeeded: none after an error), and pass any other warning on as it came."""
+    from .._warnings import AsperityWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", AsperityWarning)
+        try:
+            run(args)
+        finally:
+            notes = list(dict.fromkeys(" ".join(str(w.message).split()) for w in caught
+                                       if issubclass(w.category, AsperityWarning)))
+            others = [w for w in caught if not issubclass(w.category, AsperityWarning)]
+    for w in others:  # re-issued, so that tests (which turn warnings into errors) see them
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
+    for note in notes:
+        print(f"asperity: note: {note}", file=sys.stderr)
 
 
 def main(argv=None) -> int:
@@ -82,15 +93,12 @@ def main(argv=None) -> int:
         if args.command is None:
             parser.print_help()
             return 2
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
-            COMMANDS[args.command].run(args)
+        run_with_notes(COMMANDS[args.command].run, args)
     except (UsageError, ValueError, TypeError, MissingDependency) as exc:  # the library's own checks
         print(f"asperity: error: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("asperity: interrupted", file=sys.stderr)
         return 130
-    _notes(caught)
     return 0
 

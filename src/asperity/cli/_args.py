@@ -2,7 +2,10 @@
 
 * The shared argument groups, with help texts from :mod:`asperity.quantities`:
   :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b), :func:`add_contact_arguments`
-  (a physical contact: the bodies, the rough surface, the friction law) and
+  (a physical contact: the bodies, the rough surface, the friction law),
+  :func:`add_plasticity_arguments` (the per-asperity law: ``--law``, ``--hardness``,
+  ``--h-star``, ``--size-effect``, ``--plastic-threshold``; added by both groups before,
+  once), :func:`add_surface_arguments` (a scan file for ``surface`` and ``bem``) and
   :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``).
 * What builds the library's objects from them: :func:`is_physical`,
   :func:`model_from_args`, :func:`contact_from_args` (with :func:`surface_from_args`,
@@ -24,7 +27,8 @@ from __future__ import annotations
 import argparse
 import os
 
-from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
+from .._warnings import AsperityWarning
+from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS, PLASTIC_COLUMNS
 from ._lists import (
     MAX_POINTS,
     UsageError,
@@ -48,13 +52,19 @@ __all__ = [
     "output_dir",
     "add_model_arguments",
     "add_contact_arguments",
+    "add_body_arguments",
     "add_output_arguments",
+    "add_plasticity_arguments",
+    "add_surface_arguments",
+    "read_kwargs_from_args",
     "is_physical",
     "model_from_args",
     "contact_from_args",
     "surface_from_args",
     "friction_from_args",
+    "material_from_args",
     "title",
+    "LAW_NAMES",
     "UNITS",
     "MODEL_HELP",
     "MATERIAL_FORMS",
@@ -63,12 +73,20 @@ __all__ = [
 
 #: Output columns and units, for the epilog of ``--help`` (from :data:`asperity.quantities.CURVE_COLUMNS`).
 UNITS = ("\n".join(f"  {name:9s} {q.meaning}" for name, q in CURVE_COLUMNS.items())
+         + "".join(f"\n  {name:9s} {q.meaning} (with --law jackson-green)" for name, q in PLASTIC_COLUMNS.items())
          + "\nWith a physical contact (SI):\n"
          + "\n".join(f"  {q.si_name:11s} [{q.si_unit}] {q.si_meaning}" for q in CURVE_COLUMNS.values())
+         + "".join(f"\n  {q.si_name:11s} [{q.si_unit}] {q.si_meaning} (with --law jackson-green)"
+                   for q in PLASTIC_COLUMNS.values())
          + "\nA physical result starts with '#' lines stating the contact computed (both bodies, E*, G*, "
-           "w, h, b,\nthe surface, alpha, beta, gamma, lambda and the adhesion regime, N, the friction law); "
+           "w, h, b,\nthe surface, alpha, beta, gamma, lambda and the adhesion regime, N, the friction law, "
+           "the\nper-asperity law with the hardness and plasticity index, the interaction); "
            "read the CSV\nwith pandas.read_csv(path, comment='#'), or drop them with --no-comments. "
            "JSON: one object\n{\"contact\": {...}, \"rows\": [...]}.")
+
+#: Names of the per-asperity laws, as :data:`asperity.elastic_plastic.LAWS` lists them (that
+#: module loads SciPy, which ``--help`` must not; a test keeps the two equal).
+LAW_NAMES = ("elastic", "jackson-green")
 
 #: ``--help`` text of each model parameter (from :data:`asperity.quantities.MODEL_PARAMETERS`).
 MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", "gamma", "nu", "h_over_b")}
@@ -117,6 +135,35 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
     g.add_argument("--nu", type=float, default=None, help=_NU_HELP)
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=None, help=MODEL_HELP["h_over_b"])
+    add_plasticity_arguments(parser)
+
+
+def add_plasticity_arguments(parser: argparse.ArgumentParser) -> None:
+    """The per-asperity law: ``--law --hardness --h-star --size-effect --plastic-threshold``.
+
+    Both :func:`add_model_arguments` and :func:`add_contact_arguments` add it; the second
+    call leaves the parser as it is.  ``--hardness`` and ``--h-star`` are numbers (H/E*,
+    h*/sigma) for the dimensionless model and quantities with units for a physical contact.
+    """
+    if any("--law" in action.option_strings for action in parser._actions):
+        return  # added by the other group already
+    hardness, h_star = MODEL_PARAMETERS["H_over_E"], MODEL_PARAMETERS["h_star_over_sigma"]
+    p = parser.add_argument_group("per-asperity law and plasticity (docs/plasticity.md)")
+    p.add_argument("--law", metavar="NAME", default=None,
+                   help=f"per-asperity law: {' or '.join(LAW_NAMES)} (default elastic: Hertz, or Maugis-Dugdale "
+                        "with adhesion; jackson-green: elastic-plastic, no adhesion)")
+    p.add_argument("--hardness", metavar="H", default=None,
+                   help=f"hardness of the asperities: {hardness.meaning} ({hardness.range_text()}); with a physical "
+                        f"contact the {PHYSICAL_PARAMETERS['hardness'].meaning} as a pressure with a unit, e.g. "
+                        "188MPa (default: the materials table)")
+    p.add_argument("--h-star", dest="h_star", metavar="H_STAR", default=None,
+                   help=f"{h_star.meaning} ({h_star.range_text()}); with a physical contact a length, e.g. 1.6um; "
+                        "turns the size effect on, --hardness then being H0")
+    p.add_argument("--size-effect", dest="size_effect", action="store_true",
+                   help="with a physical contact: the Nix-Gao size effect with H0 and h* from the materials table")
+    p.add_argument("--plastic-threshold", dest="plastic_threshold", type=float, default=None,
+                   help="with a physical contact and the elastic law: note when more than this share of the "
+                        "asperities in contact is past the critical interference (default 0.01)")
 
 
 _NU_HELP = (f"{MODEL_HELP['nu']}; with a physical contact: Poisson's ratio of the (first) body, replacing "
@@ -143,29 +190,10 @@ def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
     surface: ``--sigma-s`` (alias ``--sigma``) or ``--rms`` with ``--bandwidth``, ``--R``
     (``--radius``), ``--eta`` (``--density``), ``--area``, or ``--surface FILE`` with
     ``--size --unit --method``; friction: ``--tau`` or ``--tau-f1 --tau-f2 --a1 --a2``;
-    ``--no-comments``.  ``--nu`` is the model group's option where that group exists.
+    ``--no-comments``; the per-asperity law (:func:`add_plasticity_arguments`).  ``--nu`` is
+    the model group's option where that group exists.
     """
-    b = parser.add_argument_group("physical contact: the bodies (quantities with units, e.g. 70GPa, 0.25nm, "
-                                  "0.1J/m^2)", _paragraph(MATERIAL_FORMS))
-    b.add_argument("--material", metavar="NAME",
-                   help="table name: 'Au' (on a rigid flat), 'Au/Au' (two bodies), 'A/B'")
-    b.add_argument("--E", metavar="STRESS", help=_help("E", " of the (first) body, e.g. 70GPa"))
-    try:
-        b.add_argument("--nu", type=float, default=None, help=_NU_HELP)
-    except argparse.ArgumentError:  # already there: the model group's --nu serves both
-        pass
-    b.add_argument("--material2", metavar="NAME", help="second elastic body from the table, instead of the "
-                                                       "rigid flat (one body, e.g. Si)")
-    b.add_argument("--E2", metavar="STRESS", help="Young's modulus E2 [Pa] of the second body (with --nu2: a body of "
-                                                  "your own; with --material2: replaces the table's)")
-    b.add_argument("--nu2", type=float, help="Poisson's ratio nu2 of the second body, -1 < nu2 < 0.5")
-    b.add_argument("--b", metavar="LENGTH", help=_help("b", ", e.g. 0.25nm"))
-    b.add_argument("--w", metavar="ENERGY", help=_help("w", " of the interface, e.g. 0.1J/m^2 or 50mJ/m^2 "
-                                                            "(the table's are clean surfaces in vacuum)"))
-    b.add_argument("--h", metavar="LENGTH", help=_help("h", "; default b (the paper)"))
-    b.add_argument("--sigma0", metavar="STRESS", help=_help("sigma0", ", instead of --h (h = w/sigma0)"))
-    b.add_argument("--no-adhesion", action="store_true",
-                   help="ignore the work of adhesion (Hertz contacts, gamma = 0)")
+    add_body_arguments(parser)
     s = parser.add_argument_group(
         "physical contact: the rough surface (Greenwood-Williamson summits)", _paragraph(
         "Either --sigma-s (or --rms with --bandwidth), --R and --eta, or --surface FILE; always --area. "
@@ -199,6 +227,59 @@ def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
                         help="a physical result starts with '#' lines stating the contact computed (read the CSV "
                              "with pandas.read_csv(path, comment='#')); this leaves them out. JSON output is "
                              "{\"contact\": {...}, \"rows\": [...]} either way")
+    add_plasticity_arguments(parser)
+
+
+def add_body_arguments(parser: argparse.ArgumentParser, *, adhesion: bool = True) -> None:
+    """The bodies of a physical contact: ``--material --E --nu --material2 --E2 --nu2 --b`` and,
+    with ``adhesion``, ``--w --h --sigma0 --no-adhesion`` (see :data:`MATERIAL_FORMS`).
+
+    :func:`add_contact_arguments` adds them with the surface; a command whose surface is its
+    own (``asperity bem``, a non-adhesive comparison) adds them alone, without adhesion.
+    """
+    b = parser.add_argument_group("physical contact: the bodies (quantities with units, e.g. 70GPa, 0.25nm, "
+                                  "0.1J/m^2)", _paragraph(MATERIAL_FORMS))
+    b.add_argument("--material", metavar="NAME",
+                   help="table name: 'Au' (on a rigid flat), 'Au/Au' (two bodies), 'A/B'")
+    b.add_argument("--E", metavar="STRESS", help=_help("E", " of the (first) body, e.g. 70GPa"))
+    try:
+        b.add_argument("--nu", type=float, default=None, help=_NU_HELP)
+    except argparse.ArgumentError:  # already there: the model group's --nu serves both
+        pass
+    b.add_argument("--material2", metavar="NAME", help="second elastic body from the table, instead of the "
+                                                       "rigid flat (one body, e.g. Si)")
+    b.add_argument("--E2", metavar="STRESS", help="Young's modulus E2 [Pa] of the second body (with --nu2: a body of "
+                                                  "your own; with --material2: replaces the table's)")
+    b.add_argument("--nu2", type=float, help="Poisson's ratio nu2 of the second body, -1 < nu2 < 0.5")
+    b.add_argument("--b", metavar="LENGTH", help=_help("b", ", e.g. 0.25nm"))
+    if not adhesion:
+        return
+    b.add_argument("--w", metavar="ENERGY", help=_help("w", " of the interface, e.g. 0.1J/m^2 or 50mJ/m^2 "
+                                                            "(the table's are clean surfaces in vacuum)"))
+    b.add_argument("--h", metavar="LENGTH", help=_help("h", "; default b (the paper)"))
+    b.add_argument("--sigma0", metavar="STRESS", help=_help("sigma0", ", instead of --h (h = w/sigma0)"))
+    b.add_argument("--no-adhesion", action="store_true",
+                   help="ignore the work of adhesion (Hertz contacts, gamma = 0)")
+
+
+def add_surface_arguments(parser: argparse.ArgumentParser) -> None:
+    """A measured surface: ``FILE --size --unit --fill-undefined`` (as ``asperity surface``)."""
+    parser.add_argument("file", help="height map or profile file")
+    parser.add_argument("--size", help="scan size when the file stores none: Lx,Ly or L with units "
+                                       "(e.g. 10um,10um)")
+    parser.add_argument("--unit", help="height/length unit when the file stores none (e.g. nm)")
+    parser.add_argument("--fill-undefined", action="store_true",
+                        help="fill missing (NaN) pixels by interpolation")
+
+
+def read_kwargs_from_args(args) -> dict:
+    """Keyword arguments of :func:`asperity.topography.read_topography` from :func:`add_surface_arguments`."""
+    kwargs = {"fill_undefined": args.fill_undefined}
+    if args.size:
+        kwargs["physical_sizes"] = tuple(quantity_items(args.size, "m", "--size"))
+    if args.unit:
+        kwargs["unit"] = args.unit
+    return kwargs
 
 
 def add_output_arguments(parser: argparse.ArgumentParser, plot: bool = True) -> None:
@@ -240,15 +321,35 @@ def is_physical(args) -> bool:
     return False
 
 
-def model_from_args(args):
-    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b`` and the friction constants."""
-    from ..curves import Model
+def _number(text, name: str):
+    """A dimensionless option's text as a float (None stays None)."""
+    if text is None:
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        shown = repr(text) if len(text) <= 60 else repr(text[:60]) + "..."
+        raise UsageError(f"{name}: expected a number (dimensionless, without a physical contact), "
+                         f"got {shown}") from None
 
+
+def model_from_args(args):
+    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b``, the friction
+    constants and ``--law --hardness --h-star``."""
+    from ..curves import Model
+    from ..elastic_plastic import make_law
+
+    for option, value in (("--size-effect", args.size_effect or None), ("--plastic-threshold", args.plastic_threshold)):
+        if value is not None:
+            raise UsageError(f"{option} applies to a physical contact (--material ...); without it give "
+                             "--hardness H/E* and --h-star h*/sigma")
+    law = make_law(args.law or "elastic", H_over_E=_number(args.hardness, "--hardness"),
+                   h_star_over_sigma=_number(args.h_star, "--h-star"))
     nu = 0.3 if args.nu is None else args.nu
     h_over_b = 1.0 if args.h_over_b is None else args.h_over_b
     friction = friction_from_args(args, physical=False)
     kwargs = {} if friction is None else {"friction": friction}
-    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=h_over_b, **kwargs)
+    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=h_over_b, law=law, **kwargs)
 
 
 def friction_from_args(args, *, physical: bool):
@@ -321,32 +422,50 @@ def surface_from_args(args):
     return Surface(quantity(args.sigma_s, "m", "--sigma-s"), R, eta, area)
 
 
-class SurfaceNote(UserWarning):
-    """A scan's reason for doubt (:attr:`asperity.topography.SurfaceAnalysis.warnings`), shown as a note."""
+class SurfaceNote(AsperityWarning):
+    """A scan's reason for doubt (:attr:`asperity.topography.SurfaceAnalysis.warnings`): an
+    :class:`asperity.AsperityWarning`, so :func:`asperity.cli.run_with_notes` prints it as a note."""
+
+
+def material_from_args(args):
+    """The :class:`asperity.materials.Material` of the bodies' options (``--material --E --nu
+    --material2 --E2 --nu2 --b --w --h --sigma0``) through :func:`asperity.bodies.contact_material`;
+    the library checks every value."""
+    from ..bodies import contact_material
+
+    return contact_material(args.material, E=optional_quantity(args.E, "Pa", "--E"), nu=getattr(args, "nu", None),
+                            material2=args.material2, E2=optional_quantity(args.E2, "Pa", "--E2"), nu2=args.nu2,
+                            b=optional_quantity(args.b, "m", "--b"),
+                            w=optional_quantity(getattr(args, "w", None), "J/m^2", "--w"),
+                            h=optional_quantity(getattr(args, "h", None), "m", "--h"),
+                            sigma0=optional_quantity(getattr(args, "sigma0", None), "Pa", "--sigma0"))
 
 
 def contact_from_args(args):
-    """The :class:`asperity.physical.PhysicalContact` of the physical-contact options.
+    """The :class:`asperity.physical.PhysicalContact` of the physical-contact and plasticity options.
 
-    The bodies go through :func:`asperity.bodies.contact_material`, the surface through
-    :func:`surface_from_args`, the friction law through :func:`friction_from_args`; the
-    library checks every value.
+    The bodies go through :func:`material_from_args`, the surface through
+    :func:`surface_from_args`, the friction law through :func:`friction_from_args`, the
+    per-asperity law from ``--law --hardness --h-star --size-effect --plastic-threshold``;
+    the library checks every value.
     """
-    from ..bodies import contact_material
     from ..physical import PhysicalContact
 
-    body = contact_material(args.material, E=optional_quantity(args.E, "Pa", "--E"), nu=getattr(args, "nu", None),
-                            material2=args.material2, E2=optional_quantity(args.E2, "Pa", "--E2"), nu2=args.nu2,
-                            b=optional_quantity(args.b, "m", "--b"), w=optional_quantity(args.w, "J/m^2", "--w"),
-                            h=optional_quantity(args.h, "m", "--h"),
-                            sigma0=optional_quantity(args.sigma0, "Pa", "--sigma0"))
-    return PhysicalContact(body, surface_from_args(args), friction=friction_from_args(args, physical=True),
-                           adhesion=not args.no_adhesion)
+    threshold = args.plastic_threshold
+    kwargs = {} if threshold is None else {"plastic_threshold": threshold}
+    return PhysicalContact(material_from_args(args), surface_from_args(args),
+                           friction=friction_from_args(args, physical=True), adhesion=not args.no_adhesion,
+                           plasticity=args.law, hardness=optional_quantity(args.hardness, "Pa", "--hardness"),
+                           h_star=optional_quantity(args.h_star, "m", "--h-star"),
+                           size_effect=True if args.size_effect else None, **kwargs)
 
 
 def title(args, contact=None) -> str:
-    """One line naming the contact (its first description line) or the model parameters (plot titles)."""
+    """One line naming the contact (its first description line, and a plastic law) or the model
+    parameters (plot titles)."""
+    law = "" if getattr(args, "law", None) in (None, "elastic") else f", {args.law}"
     if contact is not None:
-        return contact.describe().splitlines()[0].removeprefix("contact: ")
+        return contact.describe().splitlines()[0].removeprefix("contact: ") + law
     return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma or 0:g}, "
-            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={1.0 if args.h_over_b is None else args.h_over_b:g}")
+            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={1.0 if args.h_over_b is None else args.h_over_b:g}"
+            f"{law}")

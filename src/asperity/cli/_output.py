@@ -29,8 +29,8 @@ from .._csv import rows_to_csv
 from .._json import dumps
 from ._args import UsageError
 
-__all__ = ["output_format", "format_rows", "format_json", "format_physical", "curve_rows", "write_outputs",
-           "image_format"]
+__all__ = ["output_format", "format_rows", "format_json", "format_physical", "comment_header", "curve_rows",
+           "write_outputs", "image_format"]
 
 
 def output_format(args, piped: str = "csv") -> str:
@@ -78,10 +78,15 @@ def format_physical(rows: list[dict], fmt: str, contact, *, comments: bool = Tru
     """
     if fmt == "json":
         return format_json({"contact": contact.to_dict(), "rows": rows}, indent=1)
-    text = format_rows(rows, fmt)
-    if not comments:
-        return text
-    return "".join(f"# {line}\n" for line in contact.describe().splitlines()) + text
+    return comment_header(contact, comments=comments) + format_rows(rows, fmt)
+
+
+def comment_header(contact, *, comments: bool = True) -> str:
+    """The contact's description (:meth:`~asperity.physical.PhysicalContact.describe`) as
+    ``#`` lines ending in a newline; empty for no contact or ``comments=False``."""
+    if contact is None or not comments:
+        return ""
+    return "".join(f"# {line}\n" for line in contact.describe().splitlines())
 
 
 def curve_rows(curve) -> list[dict]:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ._args import output_file
+from ._args import add_surface_arguments, output_file
 
 NAME = "surface"
 HELP = "GW summit parameters of a measured surface (AFM map, profile)"
@@ -14,14 +14,9 @@ DESCRIPTION = ("Read a height map or line scan (any format SurfaceTopography rea
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("file", help="height map or profile file")
+    add_surface_arguments(parser)
     parser.add_argument("--material", help="material name for alpha, beta (its Burgers vector b)")
     parser.add_argument("--b", help="Burgers vector, a length (e.g. 0.2885nm), instead of --material")
-    parser.add_argument("--size", help="scan size when the file stores none: Lx,Ly or L with units "
-                                       "(e.g. 10um,10um)")
-    parser.add_argument("--unit", help="height/length unit when the file stores none (e.g. nm)")
-    parser.add_argument("--fill-undefined", action="store_true",
-                        help="fill missing (NaN) pixels by interpolation")
     parser.add_argument("--format", choices=("table", "json"), default=None,
                         help="output format (default: a readable summary on a terminal, JSON otherwise)")
     parser.add_argument("-o", "--output", metavar="FILE", type=output_file,
@@ -30,17 +25,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args) -> None:
     from .._optional import require
-    from ._args import UsageError, quantity, quantity_items
+    from ._args import UsageError, quantity, read_kwargs_from_args
     from ._output import format_json, output_format, write_outputs
 
     require("SurfaceTopography", purpose="surface", extra="topography")
     from ..topography import analyse_surface
 
-    kwargs = {"fill_undefined": args.fill_undefined}
-    if args.size:
-        kwargs["physical_sizes"] = tuple(quantity_items(args.size, "m", "--size"))
-    if args.unit:
-        kwargs["unit"] = args.unit
+    kwargs = read_kwargs_from_args(args)
     b = quantity(args.b, "m", "--b") if args.b else None
     if args.material and b is not None:
         raise UsageError("give --material or --b, not both")

@@ -1,0 +1,68 @@
+"""``asperity bem``: the statistical model beside a full boundary-element contact of a measured surface."""
+
+from __future__ import annotations
+
+import argparse
+
+from ._args import add_body_arguments, add_output_arguments, add_surface_arguments
+
+NAME = "bem"
+HELP = "check the GW model against a boundary-element contact of a surface"
+DESCRIPTION = ("Solve the full elastic (hard-wall, non-adhesive) contact of a measured surface pressed on a "
+               "half-space with boundary elements (ContactMechanics), and put the Greenwood-Williamson model "
+               "beside it for the same surface (summit parameters spectral and detected), material and loads: "
+               "real area, mean gap, contact spots, and the deviation. Loads are total forces on the scanned "
+               "area. Needs asperity[bem].")
+EPILOG = ("Columns (SI units): P_N load, p_Pa nominal pressure, fraction_bem real/nominal area, area_*_m2 real "
+          "areas, dev_* = A_GW/A_BEM - 1, gap_*_m mean gaps, sep_*_m approach (non-periodic BEM only), spots_bem "
+          "contact spots, contacts_* asperities in contact, iterations_bem.\n"
+          "The table and CSV start with '#' lines describing the model's contact for each summit method "
+          "(--no-comments: none); JSON holds them as \"contacts\". The comparison is elastic and non-adhesive "
+          "(the boundary-element solution is), so the adhesion and plasticity options do not apply.\n"
+          "Example: asperity bem scan.npy --size 4um,4um --unit nm --material Au --load 1mN:100mN:8 --grid 256")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_surface_arguments(parser)
+    add_body_arguments(parser, adhesion=False)  # its E* drives both solutions
+    parser.add_argument("--load", required=True, metavar="LIST",
+                        help="total forces on the scanned area with a force unit, e.g. 1mN:1N:8 (spaced "
+                             "logarithmically) or 1mN,5mN")
+    parser.add_argument("--grid", type=int, metavar="N",
+                        help="average the scan down to at most N points per axis first (e.g. 512)")
+    parser.add_argument("--periodic", action=argparse.BooleanOptionalAction, default=None,
+                        help="periodic or free boundaries (default: as the file says; measured scans are free)")
+    parser.add_argument("--interaction", default="none",
+                        help="asperity-interaction correction of the model: none (plain GW) or cgp2008")
+    parser.add_argument("--quiet", action="store_true", help="no progress report on standard error")
+    parser.add_argument("--no-comments", action="store_true",
+                        help="leave out the '#' lines describing the model's contacts")
+    add_output_arguments(parser)
+
+
+def run(args) -> None:
+    import warnings
+
+    from .._optional import require
+    from ._args import SurfaceNote, material_from_args, quantity_list, read_kwargs_from_args
+    from ._output import comment_header, format_json, format_rows, output_format, write_outputs
+
+    require("ContactMechanics", purpose="asperity bem", extra="bem")
+    from ..validation import validate_surface
+
+    loads = quantity_list(args.load, "N", log=True, name="--load")
+    result = validate_surface(args.file, loads, material=material_from_args(args), grid=args.grid,
+                              periodic=args.periodic, interaction=args.interaction, progress=not args.quiet,
+                              **read_kwargs_from_args(args))
+    fmt = output_format(args)
+    if fmt == "json":
+        text = format_json({"contacts": {m: c.to_dict() for m, c in result.contacts.items()}, **result.to_dict()},
+                           indent=1)
+    else:
+        cols = result.columns()
+        header = "".join(f"# summits {m}:\n" + comment_header(c) for m, c in result.contacts.items()) \
+            if not args.no_comments else ""
+        text = header + format_rows([{k: v[i] for k, v in cols.items()} for i in range(len(result))], fmt)
+    write_outputs(text, args, plot=lambda path, image: result.plot(path, image))
+    for message in result.analysis.warnings:  # notes, as every command prints the scan's doubts
+        warnings.warn(f"surface {args.file}: {message}", SurfaceNote, stacklevel=1)

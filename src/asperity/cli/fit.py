@@ -1,0 +1,199 @@
+"""``asperity fit``: fit a model to measured data (friction-load, force-separation, pull-off).
+
+Parses the options into the arguments of :mod:`asperity.fit` (``fit_friction_load``,
+``fit_force_separation``, ``fit_pull_off``, ``fit_joint``, ``compare_models``), calls it
+and prints the result: a table, or with ``--format json`` the object of
+:meth:`asperity.fit.FitResult.to_dict` (a list ranked by AIC with ``--compare``).  The
+library checks everything about the data and the options; errors are one line, exit 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from ._args import (
+    BODY_OPTIONS,
+    SURFACE_OPTIONS,
+    UsageError,
+    add_contact_arguments,
+    contact_from_args,
+    material_from_args,
+    output_file,
+    quantity,
+)
+
+#: The options that make a rough surface (--R alone is the tip radius of the single-asperity laws).
+SURFACE_ONLY = tuple(name for name in SURFACE_OPTIONS if name != "R")
+
+
+def _given(args, names) -> bool:
+    return any(getattr(args, n, None) not in (None, False) for n in names)
+
+NAME = "fit"
+HELP = "fit a model to measured friction-load, force-separation or pull-off data"
+DESCRIPTION = ("Fit the multi-asperity model (gw) or a single-asperity friction law (hertz, jkr, dmt, md, cos, "
+               "amontons) to a CSV file; report values, standard errors, 95% intervals, chi-square, AIC/BIC and "
+               "what the data cannot determine.")
+EPILOG = """Data columns (found by their header):
+  dimensionless  P, F or mu, d, P_off; uncertainties F_err, mu_err, P_err, d_err
+  physical       load [mN], friction [nN], separation [nm], pull_off [nN], friction_err [nN],
+                 or P_N, F_N, d_m; units of unit-less physical columns from --load-unit etc.
+  pull-off rows  a column named after a parameter (alpha, R [nm], sigma_s [nm]) sets it per row
+Models and their parameters (names as in --vary/--fix):
+  gw        alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2 (dimensionless data);
+            with a physical contact (--material/--sigma-s/--R/--eta/--area, or --surface FILE,
+            and the other contact options): sigma_s_m, R_m, eta_per_m2, area_m2, w_J_m2, b_m,
+            h_m, tau1_Pa, tau2_Pa, a1, a2 (physical data; the contact gives their start values,
+            its per-asperity law --law ... and its interaction stay as given)
+  hertz     R_m, E_star_Pa, tau_Pa        jkr, dmt   + w_J_m2        md   + w_J_m2, sigma0_Pa
+  cos       F0, Pc, alpha_t (F0_N, Pc_N)  amontons   mu0, P0 (P0_N)
+  force-separation fits add the offset d0 (d0_m).  The bodies (--material, or --E --nu,
+  --material2 ...) give E_star_Pa of the laws, --R (--radius) their tip radius R_m.
+A fit with a physical contact starts with '#' lines describing the contact it starts from
+(--no-comments: none); --format json then holds it as "contact".
+Examples:
+  asperity fit afm.csv --model jkr --material Si --R 20nm
+  asperity fit afm.csv --compare jkr,dmt,md,cos,amontons --material Si --R 20nm --format json
+  asperity fit mu.csv --model gw --vary alpha,gamma --fix beta=1000 --plot fit.png"""
+
+MODELS = ("gw", "hertz", "jkr", "dmt", "md", "cos", "amontons")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("data", metavar="DATA", nargs="+",
+                        help="CSV file(s); several files are fitted jointly (see --shared)")
+    parser.add_argument("--model", choices=MODELS, default=None, help="model to fit (default gw)")
+    parser.add_argument("--compare", metavar="LIST",
+                        help="fit each of these models (comma list) to the data and rank them by AIC")
+    g = parser.add_argument_group("parameters")
+    g.add_argument("--vary", metavar="NAMES", help="parameters to fit, comma list (default: the model's)")
+    g.add_argument("--fix", metavar="NAME=VALUE,...", help="hold parameters at values (SI numbers, or with a unit "
+                                                          "for physical names: R_m=20nm)")
+    g.add_argument("--start", metavar="NAME=VALUE,...", help="start values of fitted parameters")
+    g.add_argument("--bounds", metavar="NAME=LO:HI,...", help="bounds (LO or HI may be empty: open)")
+    g.add_argument("--shared", metavar="NAMES", help="with several DATA files: parameters common to all (default "
+                                                      "all); the others get one copy per file, NAME_1, NAME_2, ...")
+    f = parser.add_argument_group("fitting")
+    f.add_argument("--weights", choices=("auto", "column", "relative", "none"), default="auto",
+                   help="residual weights: column = 1/uncertainty column, relative = 1/|y| (default for "
+                        "friction and pull-off data without uncertainties), none; auto picks")
+    f.add_argument("--loss", choices=("linear", "soft_l1", "huber"), default="linear",
+                   help="loss function (soft_l1, huber: robust to outliers)")
+    f.add_argument("--ci", choices=("auto", "wald", "profile"), default="auto",
+                   help="95%% intervals: profile likelihood where the covariance is unreliable (auto), always, "
+                        "or never (wald)")
+    d = parser.add_argument_group("data")
+    d.add_argument("--kind", choices=("friction", "force", "pull_off"), help="the data kind (default: from the "
+                                                                             "columns)")
+    d.add_argument("--load-unit", metavar="UNIT", help="unit of load/force columns without one (e.g. nN)")
+    d.add_argument("--friction-unit", metavar="UNIT", help="unit of friction columns without one")
+    d.add_argument("--separation-unit", metavar="UNIT", help="unit of separation columns without one")
+    d.add_argument("--drop-nan", action="store_true", help="drop rows holding NaN (empty cells), and count them")
+    add_contact_arguments(parser)
+    o = parser.add_argument_group("output")
+    o.add_argument("--format", choices=("table", "json"), default="table", help="output format (default table)")
+    o.add_argument("-o", "--output", metavar="FILE", type=output_file, help="write to FILE instead of standard "
+                                                                           "output")
+    o.add_argument("--plot", metavar="FILE.png", type=output_file, help="also draw data, fit and residuals")
+
+
+def _names(text, option):
+    if text is None:
+        return None
+    items = [x.strip() for x in text.split(",")]
+    if any(not x for x in items):
+        raise UsageError(f"{option}: empty name in {text!r}; give names separated by commas")
+    return items
+
+
+def _pairs(text, option):
+    if text is None:
+        return {}
+    out = {}
+    for item in _names(text, option):
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            raise UsageError(f"{option}: expected NAME=VALUE, got {item!r}")
+        out[name.strip()] = value.strip()
+    return out
+
+
+def _value(name, text, option):
+    """A number, or a quantity with a unit for a physical parameter name (R_m=20nm)."""
+    try:
+        return float(text)
+    except ValueError:
+        pass
+    from ..quantities import FIT_PARAMETERS, PHYSICAL_PARAMETERS
+
+    units = {q.si_name: q.si_unit for reg in (PHYSICAL_PARAMETERS, FIT_PARAMETERS) for q in reg.values()
+             if q.si_name}
+    if name not in units:
+        raise UsageError(f"{option}: {name}={text!r} is not a number")
+    return quantity(text, units[name], f"{option} {name}")
+
+
+def _bounds(text):
+    out = {}
+    for name, value in _pairs(text, "--bounds").items():
+        lo, sep, hi = value.partition(":")
+        if not sep:
+            raise UsageError(f"--bounds: expected {name}=LO:HI, got {name}={value!r}")
+        out[name] = tuple(None if not x.strip() else _value(name, x.strip(), "--bounds") for x in (lo, hi))
+    return out
+
+
+def _options(args):
+    vary = _names(args.vary, "--vary")
+    fix = {k: _value(k, v, "--fix") for k, v in _pairs(args.fix, "--fix").items()}
+    start = {k: _value(k, v, "--start") for k, v in _pairs(args.start, "--start").items()}
+    contact = material = None
+    if _given(args, SURFACE_ONLY):  # a rough surface: the multi-asperity contact of gw
+        contact = contact_from_args(args)
+    if _given(args, BODY_OPTIONS):  # the bodies: E* of the single-asperity laws
+        material = material_from_args(args)
+    if args.R is not None:  # the tip radius of the single-asperity laws
+        R = quantity(args.R, "m", "--R")
+        (start if vary is not None and "R_m" in vary else fix).setdefault("R_m", R)
+    return {"vary": vary, "fix": fix, "start": start, "bounds": _bounds(args.bounds), "contact": contact,
+            "material": material, "weights": args.weights, "loss": args.loss, "ci": args.ci}
+
+
+def run(args) -> None:
+    from ..fit import compare_models, fit_force_separation, fit_friction_load, fit_joint, fit_pull_off, read_data
+    from ._output import comment_header, format_json, write_outputs
+
+    units = {k: v for k, v in (("load", args.load_unit), ("friction", args.friction_unit),
+                               ("separation", args.separation_unit)) if v is not None}
+    opts = _options(args)
+    contact = opts["contact"]
+    if args.compare is not None and args.model is not None:
+        raise UsageError("give --model or --compare, not both")
+    datasets = [read_data(path, kind=args.kind, units=units, drop_nan=args.drop_nan) for path in args.data]
+    if args.compare is not None:
+        if len(datasets) > 1:
+            raise UsageError("--compare fits one DATA file")
+        result = compare_models(datasets[0], _names(args.compare, "--compare"), **opts)
+        listed = result.to_list()
+        text = format_json(listed if contact is None else {"contact": contact.to_dict(), "results": listed}) \
+            if args.format == "json" else result.summary() + "\n" + "\n".join(r.summary() for r in result.results)
+        best = result.best
+    else:
+        model = args.model or "gw"
+        if len(datasets) > 1:
+            best = fit_joint(datasets, model, shared=_names(args.shared, "--shared"), **opts)
+        else:
+            if args.shared is not None:
+                raise UsageError("--shared needs several DATA files")
+            fit = {"friction": fit_friction_load, "force": fit_force_separation,
+                   "pull_off": fit_pull_off}[datasets[0].kind]
+            best = fit(datasets[0], model, **opts)
+        fitted = best.to_dict() if contact is None else {"contact": contact.to_dict(), **best.to_dict()}
+        text = format_json(fitted) if args.format == "json" else best.summary()
+    if args.format != "json":
+        text = comment_header(contact, comments=not args.no_comments) + text
+
+    def plot(path, fmt):
+        best.plot(path, fmt=fmt)
+
+    write_outputs(text, args, plot=plot)

@@ -1,0 +1,149 @@
+"""``asperity plot``: a heat map of a finished sweep (NetCDF or Zarr).
+
+``asperity plot map.nc --x alpha --y gamma --z pull_off`` draws the variable ``--z`` over
+two dimensions of the sweep; any other dimension is fixed with ``--at NAME=VALUE`` (the
+nearest value).  Axes are logarithmic for the quantities :mod:`asperity.quantities` marks
+``log``, and so is the colour scale when every value is positive; the colour bar carries
+the variable's meaning and units from the file's attributes.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from ._args import UsageError, output_file
+
+NAME = "plot"
+HELP = "heat map of a finished sweep"
+DESCRIPTION = "Draw one variable of a sweep (asperity sweep) over two of its dimensions as a heat map."
+EPILOG = """Example:
+  asperity plot map.nc --x alpha --y gamma --z pull_off -o pull_off.png
+  asperity plot map.nc --x alpha --y gamma --z mu --at P=10"""
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("store", metavar="MAP", help="the sweep: a NetCDF file or a .zarr directory")
+    parser.add_argument("--x", required=True, help="dimension on the horizontal axis (e.g. alpha)")
+    parser.add_argument("--y", required=True, help="dimension on the vertical axis (e.g. gamma)")
+    parser.add_argument("--z", required=True, help="variable drawn in colour (e.g. pull_off, mu)")
+    parser.add_argument("--at", metavar="NAME=VALUE", action="append", default=[],
+                        help="fix another dimension at the value nearest VALUE (repeatable), e.g. P=10")
+    parser.add_argument("-o", "--output", metavar="FILE.png", type=output_file, default=None,
+                        help="image file (default: Z.png); the format follows the extension")
+
+
+def _at(items) -> dict[str, float]:
+    out = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        try:
+            out[name.strip()] = float(value)
+        except ValueError:
+            sep = ""
+        if not sep or not name.strip():
+            raise UsageError(f"--at: expected NAME=VALUE with a number, got {item!r}")
+    return out
+
+
+def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
+    """Draw ``ds[z]`` over dimensions ``x`` (horizontal) and ``y`` and save it to ``path`` as ``fmt``.
+
+    Raises
+    ------
+    UsageError
+        For an unknown variable or dimension, or a dimension left unfixed.
+    """
+    import matplotlib
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.colors import LogNorm
+    from matplotlib.figure import Figure
+
+    from ..quantities import quantity
+
+    if z not in ds.data_vars or z == "message":
+        raise UsageError(f"--z: {z!r} is not a variable of the sweep; it has "
+                         f"{', '.join(v for v in ds.data_vars if v not in ('message', 'chunk_done'))}")
+    var = ds[z]
+    for option, name in (("--x", x), ("--y", y)):
+        if name not in var.dims:
+            raise UsageError(f"{option}: {name!r} is not a dimension of {z}; its dimensions are {', '.join(var.dims)}")
+    if x == y:
+        raise UsageError("--x and --y must be different dimensions")
+    for name in at:
+        if name not in var.dims or name in (x, y):
+            raise UsageError(f"--at: {name!r} is not another dimension of {z} ({', '.join(var.dims)})")
+    var = var.sel({k: v for k, v in at.items()}, method="nearest")
+    left = [d for d in var.dims if d not in (x, y)]
+    if left:
+        raise UsageError(f"{z} also varies along {', '.join(left)}: fix it with --at "
+                         + " ".join(f"{d}=VALUE" for d in left))
+    values = var.transpose(y, x).values.astype(float)
+    fig = Figure(figsize=(6.4, 4.8), layout="constrained")
+    FigureCanvasAgg(fig)
+    ax = fig.subplots()
+    finite = values[np.isfinite(values)]
+    log_z = bool(np.any(finite > 0)) and _is_log(z, quantity)
+    if log_z:  # decades: a log colour scale; zeros (no pull-off, say) and NaN drawn grey
+        values = np.where(values > 0, values, np.nan)
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.85")
+    mesh = ax.pcolormesh(ds[x].values, ds[y].values, np.ma.masked_invalid(values), shading="nearest",
+                         norm=LogNorm() if log_z else None, cmap=cmap)
+    for name, set_scale, set_label in ((x, ax.set_xscale, ax.set_xlabel), (y, ax.set_yscale, ax.set_ylabel)):
+        coord = ds[name].values
+        if _is_log(name, quantity) and np.all(coord > 0) and coord.size > 1:
+            set_scale("log")
+        set_label(_label(ds[name], name))
+    bar = fig.colorbar(mesh, ax=ax)
+    bar.set_label(_label(ds[z], z))
+    notes = [f"{k} = {float(var[k]):.4g}" for k in at]
+    if not np.all(np.isfinite(values)):
+        notes.append("grey: " + ("<= 0 or " if log_z else "") + "not computed (see message)")
+    if notes:
+        ax.set_title(", ".join(notes), fontsize=10)
+    fig.savefig(path, dpi=150, format=fmt)
+
+
+def _is_log(name, quantity) -> bool:
+    base = {"pull_off": "P", "pull_off_N": "P", "P_N": "P", "F_N": "F", "area_m2": "area",
+            "pressure_Pa": "pressure", "d_m": "d", "pull_off_d": "d", "pull_off_d_m": "d"}.get(name, name)
+    try:
+        return quantity(base).log
+    except ValueError:
+        return False
+
+
+def _label(da, name) -> str:
+    """``'$\\alpha$'``, ``'pull_off [N G b^2]'``: the symbol (or name) and the unit from the attributes."""
+    from ..quantities import quantity
+
+    try:
+        text = f"${quantity(name).symbol}$" if name in da.dims else name
+    except ValueError:
+        text = name
+    unit = da.attrs.get("units")
+    return f"{text} [{unit}]" if unit and unit != "1" else text
+
+
+def run(args) -> None:
+    import os
+
+    from .._atomic import atomic_path
+    from .._optional import require
+    from ._output import image_format
+
+    xr = require("xarray", purpose="asperity plot", extra="sweep")
+    require("matplotlib", purpose="asperity plot", extra="plot")
+    if not os.path.exists(args.store):
+        raise UsageError(f"no such sweep: {args.store!r}")
+    at = _at(args.at)
+    path = args.output or f"{args.z}.png"
+    fmt = image_format(path)
+    zarr = args.store.rstrip("/").endswith(".zarr")
+    try:
+        ds = xr.open_zarr(args.store, consolidated=False) if zarr else xr.open_dataset(args.store)
+    except (OSError, ValueError) as err:
+        raise UsageError(f"cannot read the sweep {args.store!r}: {err}") from None
+    with ds, atomic_path(path) as tmp:
+        heat_map(ds, args.x, args.y, args.z, at, tmp, fmt)
+    print(f"wrote {path}")

@@ -1,0 +1,406 @@
+r"""Multi-asperity integrals on the approach and retraction branches of a loading cycle.
+
+The paper's integrals (Eqs 5, 6, 10, 18, 21) count every asperity down to the end of its
+stable Maugis-Dugdale branch, :math:`\bar u \ge \bar u_{end}`: that is the surface pulled
+away after full contact.  An experiment is a cycle (Fuller & Tabor 1975).  With
+:math:`\bar u = \bar z - \bar d` the penetration of an asperity of height :math:`\bar z`,
+:math:`\bar u_{end} < 0` the end of its stable branch and :math:`\bar u_{in}`
+(:math:`\bar u_{end} \le \bar u_{in} \le 0`, default 0: first touch) the penetration at
+which an approaching asperity jumps into contact:
+
+* **approach** to :math:`\bar d`: the asperities with :math:`\bar u \ge \bar u_{in}` touch,
+
+  .. math:: S^{app}(\bar d) = \int_{\bar u_{in}}^\infty q(\bar u)\,\phi(\bar d + \bar u)\,d\bar u;
+
+* **retraction** to :math:`\bar d \ge \bar d_{min}` after the closest approach
+  :math:`\bar d_{min}`: the asperities that touched (:math:`\bar z \ge \bar d_{min} + \bar u_{in}`)
+  and have not snapped off (:math:`\bar u \ge \bar u_{end}`),
+
+  .. math::
+      S^{ret}(\bar d; \bar d_{min}) = \int_{\bar u_c}^\infty q\,\phi(\bar d + \bar u)\,d\bar u,
+      \qquad \bar u_c = \max(\bar u_{end},\ \bar u_{in} + \bar d_{min} - \bar d),
+
+  which is :math:`S^{app}(\bar d) + \int_{\bar u_c}^{\bar u_{in}} q\,\phi\,d\bar u` in the
+  *transition zone* :math:`\bar d < \bar d_{min} + \bar u_{in} - \bar u_{end}` and the paper's
+  curve beyond it;
+* **loop integrals** over a cycle :math:`\bar d_{max} \to \bar d_{min} \to \bar d_{max}`
+  (exchanging the order of integration, :math:`\bar\Phi` the survival function of the heights):
+
+  .. math::
+      L = \int_{\bar d_{min}}^{\bar d_{max}} (S^{ret} - S^{app})\,d\bar d
+        = \int_{\bar u_c(\bar d_{max})}^{\bar u_{in}} q(\bar u)\,
+          \big[\bar\Phi(\bar d_{min} + \bar u_{in}) - \bar\Phi(\bar d_{max} + \bar u)\big]\,d\bar u,
+
+  the bracket counting the asperities that touched and pass through penetration
+  :math:`\bar u` while stuck on retraction.  For the force column, :math:`-L` is the energy
+  dissipated per cycle.
+
+:math:`q` is each of the columns (1, :math:`\bar P`, :math:`\bar F`, :math:`\bar a^2`) of the
+per-asperity law (a :class:`~asperity.asperity_law.ContactLaw`).  The approach integrals are a
+:class:`~asperity.tabulation.Tabulation` of the law cut off at :math:`\bar u_{in}`
+(:class:`ApproachLaw`: the fast path and :mod:`asperity.load_control` apply unchanged); the
+paper's integrals come from the :class:`~asperity.curves.Model`; the band
+:math:`[\bar u_c, \bar u_{in}]` is integrated on fixed Gauss-Legendre panels over
+:math:`[\bar u_{end}, \bar u_{in}]` (:class:`LoopBand`, first panel in :math:`s` with
+:math:`\bar u = \bar u_{end} + s^4`, which makes the branch end's square or fourth root
+analytic), the panel cut by the moving limit on fresh nodes.
+
+References
+----------
+.. [1] K. N. G. Fuller, D. Tabor, Proc. R. Soc. A 345 (1975) 327.
+.. [2] Adams et al., Eqs (5), (6), (10), (18), (21).
+.. [3] J. A. Greenwood, Tribol. Lett. 65 (2017) 159 (review of Fuller-Tabor hysteresis).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ._validation import as_float_array, scalar
+from .asperity_law import ContactLaw
+from .curves import Model
+from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
+from .tabulation import Tabulation
+
+__all__ = ["ApproachLaw", "LoopBand", "CycleIntegrals", "law_columns", "check_u_in"]
+
+
+def law_columns(law: ContactLaw, u):
+    r"""The four integrands of a law at penetrations ``u``: (1, P, F, a^2), shape (u.size, 4).
+
+    The same columns, in the same order, as :data:`asperity.tabulation.COLUMNS`
+    (contacts, :math:`\bar P`, :math:`\bar F`, :math:`\bar a^2`); 0 below the law's ``u_end``.
+    """
+    u = np.asarray(u, dtype=float).ravel()
+    a, P = law.evaluate(u)
+    F = law.friction(a)
+    on = (u >= law.u_end).astype(float)
+    return np.stack([on, P, F, a * a], axis=1)
+
+
+def check_u_in(u_in, u_end: float) -> float:
+    """``u_in`` as a float in [u_end, 0]; ValueError naming it otherwise."""
+    u_in = float(scalar(as_float_array(u_in, "u_in"), "u_in"))
+    if not u_end <= u_in <= 0.0:
+        raise ValueError(f"u_in (penetration at which an approaching asperity jumps into contact, in sigma) must "
+                         f"lie in [u_end, 0] = [{u_end:.6g}, 0]: from the end of the stable branch to first "
+                         f"touch; got {u_in!r}")
+    return u_in
+
+
+class ApproachLaw:
+    r"""A contact law seen by an approaching asperity: the law cut off below :math:`\bar u_{in}`.
+
+    An asperity that has not touched yet carries nothing until its penetration reaches
+    :math:`\bar u_{in}`; from there on it follows the stable branch of ``law``.  As a
+    :class:`~asperity.asperity_law.ContactLaw` with ``u_end = u_in`` it plugs into
+    :class:`~asperity.tabulation.Tabulation` and :mod:`asperity.load_control` unchanged.
+
+    Parameters
+    ----------
+    law : ContactLaw
+        The per-asperity law (e.g. :class:`~asperity.asperity_law.AsperityLaw`).
+    u_in : float
+        Jump-in penetration :math:`\bar u_{in}` in :math:`\sigma`, in ``[law.u_end, 0]``.
+
+    Examples
+    --------
+    >>> from asperity.asperity_law import AsperityLaw, ModelParameters
+    >>> law = AsperityLaw(ModelParameters(0.01, 1000.0, 1e-3))
+    >>> app = ApproachLaw(law, 0.0)
+    >>> a, P = app.evaluate(np.array([law.u_end / 2, 0.5]))
+    >>> float(P[0]), bool(P[1] == law.evaluate(np.array([0.5]))[1][0])
+    (0.0, True)
+    """
+
+    def __init__(self, law: ContactLaw, u_in: float):
+        self.base = law
+        self.params = law.params
+        self.u_end = check_u_in(u_in, law.u_end)
+        self.scale = law.scale
+        self.breakpoints = tuple(b for b in law.breakpoints if b > self.u_end)
+
+    def evaluate(self, u_bar):
+        """Contact radius and force of ``law`` at ``u_bar``, zero below ``u_in``."""
+        u = np.asarray(u_bar, dtype=float)
+        a, P = self.base.evaluate(u)
+        off = u < self.u_end
+        return np.where(off, 0.0, a), np.where(off, 0.0, P)
+
+    def friction(self, a_bar):
+        """Friction force of one asperity of radius ``a_bar`` (the law's)."""
+        return self.base.friction(a_bar)
+
+
+class LoopBand:
+    r"""The per-asperity law on fixed quadrature panels over :math:`[\bar u_{end}, \bar u_{in}]`.
+
+    Gives :math:`\int_{\bar u_c}^{\bar u_{in}} q(\bar u)\,\phi^{(j)}(\bar d + \bar u)\,d\bar u` for
+    pairs :math:`(\bar d, \bar u_c)` (:meth:`sums`) and the loop integrals (:meth:`loop`).
+    Panels are those of the tabulation (:func:`~asperity.quadrature.panel_edges`: a first panel
+    in :math:`s`, :math:`\bar u = \bar u_{end} + s^4`, graded panels, the law's breakpoints as
+    edges, unit panels), cut at :math:`\bar u_{in}`; the panel holding :math:`\bar u_c` is
+    integrated from :math:`\bar u_c` on 16 fresh Gauss-Legendre nodes (in :math:`s` on the
+    first panel), the panels above on the fixed nodes.
+
+    Parameters
+    ----------
+    law : ContactLaw
+        The per-asperity law.
+    u_in : float
+        Jump-in penetration, in ``[law.u_end, 0]``.
+    heights : HeightDistribution
+        The height distribution (its ``pdf``, ``pdf_derivative``, ``sf``, ``weighted_sums``).
+    """
+
+    def __init__(self, law: ContactLaw, u_in: float, heights):
+        self.law = law
+        self.heights = heights
+        self.u_end = float(law.u_end)
+        self.u_in = check_u_in(u_in, self.u_end)
+        self.width = self.u_in - self.u_end
+        if self.width <= 0.0:
+            self.edges = np.array([self.u_in])
+            self.u = np.zeros(0)
+            self.weights = np.zeros((0, 4))
+            return
+        first = min(law.scale, 0.2, *((bp - self.u_end) / 3.0 for bp in law.breakpoints if bp > self.u_end))
+        edges = panel_edges(self.u_end, self.u_in + 2.0, first, law.breakpoints)  # run past u_in, then cut
+        keep = edges < self.u_in - 1e-12 * max(1.0, self.width)
+        self.edges = np.append(edges[keep], self.u_in)
+        u, w = composite_nodes(self.edges)
+        self.u = u
+        self.weights = w[:, None] * law_columns(law, u)
+
+    @property
+    def panels(self) -> int:
+        """Number of panels."""
+        return self.edges.size - 1
+
+    def _partial(self, u_c, edge=False):
+        """Nodes and weighted integrands on [u_c, next edge] for each u_c: (m, 16), (m, 16, 4); with
+        ``edge``, also the integrands at u_c itself, (m, 4) (one call of the law for both)."""
+        x, w = gauss_legendre(NODES_PER_PANEL)
+        j = np.clip(np.searchsorted(self.edges, u_c, side="right") - 1, 0, self.panels - 1)
+        right = self.edges[j + 1]
+        nodes = u_c[:, None] + (right - u_c)[:, None] * x[None, :]
+        weights = (right - u_c)[:, None] * w[None, :]
+        first = j == 0  # in s, u = u_end + s^4: analytic at the branch end
+        if np.any(first):
+            s_a = np.maximum(u_c[first] - self.u_end, 0.0) ** 0.25
+            s_b = (right[first] - self.u_end) ** 0.25
+            s = s_a[:, None] + (s_b - s_a)[:, None] * x[None, :]
+            nodes[first] = self.u_end + s**4
+            weights[first] = 4.0 * s**3 * (s_b - s_a)[:, None] * w[None, :]
+        q = law_columns(self.law, np.concatenate([nodes.ravel(), u_c if edge else []]))
+        wq = weights[:, :, None] * q[:nodes.size].reshape(*nodes.shape, 4)
+        return (j, nodes, wq, q[nodes.size:]) if edge else (j, nodes, wq)
+
+    def sums(self, d, u_c, order: int = 0, edge: bool = False):
+        r"""``[B_0, .., B_order]``: :math:`B_j = \int_{u_c}^{u_{in}} q\,\phi^{(j)}(d + u)\,du`, shape (n, 4).
+
+        ``d`` and ``u_c`` are 1-D of equal length, ``u_c`` in ``[u_end, u_in]``.  With ``edge``,
+        the integrands :math:`q(u_c)` (shape (n, 4)) are appended to the list.
+        """
+        d = np.asarray(d, dtype=float).ravel()
+        u_c = np.asarray(u_c, dtype=float).ravel()
+        out = [np.zeros((d.size, 4)) for _ in range(order + 1)]
+        if self.width <= 0.0 or d.size == 0:
+            return out + ([np.zeros((d.size, 4))] if edge else [])
+        h = self.heights
+        uniq, inv = np.unique(u_c, return_inverse=True)
+        j, nodes, wq, q_c = self._partial(uniq, edge=True)
+        if uniq.size * 8 < d.size:  # few distinct cuts (a shared grid): one product per cut
+            for c in range(uniq.size):
+                rows = np.flatnonzero(inv == c)
+                x = d[rows, None] + nodes[c]
+                out[0][rows] += h.pdf(x) @ wq[c]
+                for k in range(1, order + 1):
+                    out[k][rows] += h.pdf_derivative(x, k) @ wq[c]
+        else:
+            x = d[:, None] + nodes[inv]  # (n, 16)
+            dens = [h.pdf(x)] + [h.pdf_derivative(x, k) for k in range(1, order + 1)]
+            for k in range(order + 1):
+                out[k] += np.einsum("nj,njc->nc", dens[k], wq[inv])
+        # Whole panels above the cut, on the fixed nodes, grouped by the cut panel.
+        z_top = h.z_top
+        rows_j = j[inv]
+        for jj in np.unique(rows_j):
+            rows = np.flatnonzero(rows_j == jj)
+            start = (jj + 1) * NODES_PER_PANEL
+            if start >= self.u.size:
+                continue
+            lo, hi = -d[rows].max() - z_top, -d[rows].min() + z_top  # where the density reaches
+            a = start + np.searchsorted(self.u[start:], lo)
+            b = start + np.searchsorted(self.u[start:], hi, side="right")
+            if b > a:
+                parts = h.weighted_sums(d[rows], self.u[a:b], self.weights[a:b], order)
+                for k in range(order + 1):
+                    out[k][rows] += parts[k]
+        return out + ([q_c[inv]] if edge else [])
+
+    def loop(self, d_min, d_max: float):
+        r"""Loop integrals :math:`L(\bar d_{min}, \bar d_{max})` (module docstring), shape (n, 4).
+
+        ``d_min`` 1-D, each ``<= d_max``.  Columns as in :func:`law_columns`; ``-L[:, 1]`` is the
+        energy dissipated per cycle and per asperity, in :math:`Gb^2\sigma`.
+        """
+        d_min = np.asarray(d_min, dtype=float).ravel()
+        out = np.zeros((d_min.size, 4))
+        if self.width <= 0.0:
+            return out
+        sf = self.heights.sf
+        u_c = np.maximum(self.u_end, self.u_in - (d_max - d_min))
+        for value in np.unique(u_c):
+            rows = np.flatnonzero(u_c == value)
+            j, nodes, wq = self._partial(np.array([value]))
+            start = (int(j[0]) + 1) * NODES_PER_PANEL
+            u = np.concatenate([nodes[0], self.u[start:]])
+            W = np.concatenate([wq[0], self.weights[start:]])
+            count = sf(d_min[rows, None] + self.u_in) - sf(d_max + u[None, :])  # (rows, nodes)
+            out[rows] = count @ W
+        return out
+
+    def loop_energy(self) -> float:
+        r""":math:`e = -\int_{\bar u_{end}}^{\bar u_{in}} \bar P(\bar u)\,d\bar u` (:math:`Gb^2\sigma`):
+        the energy one asperity dissipates going once through the whole loop (0 without one)."""
+        return float(-self.weights[:, 1].sum()) if self.u.size else 0.0
+
+
+class CycleIntegrals:
+    r"""The approach, retraction and loop integrals of one parameter set, with cached tables.
+
+    Parameters
+    ----------
+    model : Model
+        The parameter set (its law, heights and cached tabulation of the paper's integrals).
+    u_in : float
+        Jump-in penetration :math:`\bar u_{in}` in :math:`\sigma`, in ``[u_end, 0]`` (default 0,
+        first touch; ``u_end`` gives the paper's hysteresis-free reading).
+
+    Attributes
+    ----------
+    u_end, u_in : float
+        End of the stable branch and jump-in penetration (:math:`\sigma`).
+    reach : float
+        :math:`\bar u_{in} - \bar u_{end} \ge 0`: width of the transition zone of retraction.
+    band : LoopBand
+        The law on :math:`[\bar u_{end}, \bar u_{in}]`.
+
+    Raises
+    ------
+    ValueError
+        If ``model`` is not a :class:`~asperity.curves.Model` or ``u_in`` is out of range.
+    """
+
+    def __init__(self, model: Model, u_in=0.0):
+        if not isinstance(model, Model):
+            raise ValueError(f"model must be an asperity.Model, got {type(model).__name__}")
+        self.model = model
+        self.params = model.params
+        self.heights = model.heights
+        self.law = model.law
+        self.u_end = float(self.law.u_end)
+        self.u_in = check_u_in(u_in, self.u_end)
+        self.reach = self.u_in - self.u_end
+        self.band = LoopBand(self.law, self.u_in, self.heights)
+        self.approach_law = ApproachLaw(self.law, self.u_in) if self.reach > 0 else self.law
+        self._tab_app: Tabulation | None = None
+
+    # -- tables ---------------------------------------------------------------------------
+    def paper_tab(self, d_lo: float, d_hi: float) -> Tabulation:
+        """The model's tabulation of the paper's integrals, serving [d_lo, d_hi]."""
+        return self.model.tabulation(d_lo, d_hi)
+
+    def approach_tab(self, d_lo: float, d_hi: float) -> Tabulation:
+        """A tabulation of :class:`ApproachLaw` serving [d_lo, d_hi] (cached, widened as needed)."""
+        if self.reach == 0.0:
+            return self.paper_tab(d_lo, d_hi)
+        if self._tab_app is None:
+            self._tab_app = Tabulation(self.params, d_lo, d_hi, self.heights, law=self.approach_law)
+        else:
+            self._tab_app = self._tab_app.extended(d_lo, d_hi)
+        return self._tab_app
+
+    def set_approach_tab(self, tab: Tabulation) -> None:
+        """Keep ``tab`` (a widened approach tabulation returned by :mod:`asperity.load_control`)."""
+        if self.reach == 0.0:
+            self.model.tabulation(tab.d_min, tab.d_max)
+        else:
+            self._tab_app = tab
+
+    # -- sums -----------------------------------------------------------------------------
+    def approach_sums(self, d, order: int = 0):
+        """``[S_0, .., S_order]`` on approach at separations ``d`` (1-D): shape (n, 4) each."""
+        d = np.asarray(d, dtype=float).ravel()
+        if d.size == 0:
+            return [np.zeros((0, 4)) for _ in range(order + 1)]
+        return self.approach_tab(float(d.min()), float(d.max())).sums(d, order)
+
+    def paper_sums(self, d, order: int = 0):
+        """``[S_0, .., S_order]`` of the paper's integrals (Eq 18's lower limit) at ``d``."""
+        d = np.asarray(d, dtype=float).ravel()
+        if d.size == 0:
+            return [np.zeros((0, 4)) for _ in range(order + 1)]
+        return self.paper_tab(float(d.min()), float(d.max())).sums(d, order)
+
+    def zone_sums(self, d, d_min, order: int = 0):
+        r"""Retraction sums by the transition-zone formula, valid for :math:`0 \le d - d_{min} \le` reach.
+
+        :math:`S^{app} + \int_{u_c}^{u_{in}} q\phi`, and for ``order`` 1 the derivative
+        :math:`\int_{u_c}^\infty q\phi' + q(u_c)\phi(\bar d_{min} + \bar u_{in})` (the lower limit
+        moves with :math:`\bar d`).  At ``d - d_min = reach`` this is the left-hand derivative at
+        the kink where the transition zone ends.
+        """
+        if order > 1:
+            raise ValueError(f"order must be 0 or 1, got {order}")
+        d, d_min = (np.asarray(x, dtype=float).ravel() for x in np.broadcast_arrays(d, d_min))
+        u_c = np.clip(self.u_in - (d - d_min), self.u_end, self.u_in)
+        app = self.approach_sums(d, order)
+        *band, q_c = self.band.sums(d, u_c, order, edge=True) if order else (*self.band.sums(d, u_c), None)
+        out = [a + b for a, b in zip(app, band, strict=True)]
+        if order == 1 and self.reach > 0:
+            out[1] = out[1] + q_c * self.heights.pdf(d_min + self.u_in)[:, None]
+        return out
+
+    def retract_sums(self, d, d_min, order: int = 0):
+        r"""``[S_0, .., S_order]`` on retraction to ``d`` after the closest approach ``d_min``.
+
+        ``d`` and ``d_min`` broadcast (1-D after), ``d >= d_min``; the paper's integrals beyond
+        the transition zone, :meth:`zone_sums` inside it.  ``order`` 0 or 1.
+        """
+        d, d_min = (np.asarray(x, dtype=float).ravel() for x in np.broadcast_arrays(d, d_min))
+        out = [np.zeros((d.size, 4)) for _ in range(order + 1)]
+        zone = (d - d_min) < self.reach
+        for rows, parts in ((~zone, lambda r: self.paper_sums(d[r], order)),
+                            (zone, lambda r: self.zone_sums(d[r], d_min[r], order))):
+            if np.any(rows):
+                for o, part in zip(out, parts(rows), strict=True):
+                    o[rows] = part
+        return out
+
+    def loop(self, d_min, d_max: float):
+        """Loop integrals of the cycle ``d_max -> d_min -> d_max``: :meth:`LoopBand.loop`."""
+        return self.band.loop(d_min, d_max)
+
+    def loop_energy(self) -> float:
+        """Energy one asperity dissipates through the whole loop (:meth:`LoopBand.loop_energy`)."""
+        return self.band.loop_energy()
+
+    def loop_fraction(self, d_min, d_max: float):
+        r"""Fraction of asperities through the whole loop: touched on approach
+        (:math:`\bar z \ge \bar d_{min} + \bar u_{in}`) and snapped off on retraction
+        (:math:`\bar z \le \bar d_{max} + \bar u_{end}`); 0 without hysteresis."""
+        d_min = np.asarray(d_min, dtype=float)
+        if self.reach == 0.0:
+            return np.zeros_like(d_min)
+        sf = self.heights.sf
+        return np.maximum(sf(d_min + self.u_in) - sf(d_max + self.u_end), 0.0)
+
+
+def chebyshev_points(m: int):
+    """``m`` points on [0, 1] clustered at both ends (Chebyshev-Lobatto), from 0 to 1."""
+    k = np.arange(m)
+    return 0.5 * (1.0 - np.cos(math.pi * k / (m - 1)))

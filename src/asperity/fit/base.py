@@ -1,0 +1,166 @@
+r"""What a fit model is: parameters (:class:`ParameterSpec`), curve (:class:`FitCurve`), interface (:class:`FitModel`).
+
+A model names its parameters with :mod:`asperity.quantities` (the SI name of a physical
+quantity, ``w_J_m2``; the symbol of a dimensionless one, ``alpha``), takes their bounds and
+log scale from the registry, and predicts, for a data set of each kind it supports, the
+values at the data's points (:meth:`FitModel.predict`) and the curve on a grid
+(:meth:`FitModel.curve`).  The models themselves are in :mod:`asperity.fit.laws` and
+:mod:`asperity.fit.gw`; the registry in :mod:`asperity.fit.models`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..quantities import quantity
+from .data import Dataset
+
+__all__ = ["ParameterSpec", "FitCurve", "FitModel", "parameter_spec"]
+
+
+@dataclass(frozen=True)
+class ParameterSpec:
+    """One parameter of a model: its start value, whether it varies by default, bounds, scale.
+
+    Attributes
+    ----------
+    name : str
+        Fit name: the SI name of a physical quantity (``w_J_m2``), else the symbol (``alpha``).
+    value : float or None
+        Start (or fixed) value; None if the user must give one.
+    vary : bool
+        Varied by default.
+    lo, hi : float
+        Bounds (from :mod:`asperity.quantities`).
+    log : bool
+        Fitted in log10 (the quantity spans decades).
+    unit : str
+        Unit (SI for physical parameters).
+    meaning : str
+        One line, from the registry.
+    """
+
+    name: str
+    value: float | None
+    vary: bool = False
+    lo: float = -math.inf
+    hi: float = math.inf
+    log: bool = False
+    unit: str = "1"
+    meaning: str = ""
+
+
+def parameter_spec(qname: str, value, *, physical: bool, vary: bool = False, meaning=None) -> ParameterSpec:
+    """The :class:`ParameterSpec` of registry quantity ``qname`` (SI name if ``physical``)."""
+    q = quantity(qname)
+    si = physical and q.si_name is not None
+    return ParameterSpec(name=q.si_name if si else q.name, value=None if value is None else float(value), vary=vary,
+                         lo=q.lo, hi=q.hi, log=q.log, unit=(q.si_unit if si else q.unit) or "1",
+                         meaning=q.meaning if meaning is None else meaning)
+
+
+@dataclass(frozen=True)
+class FitCurve:
+    """A fitted curve of a single-asperity or empirical law on a grid: named columns with units.
+
+    ``columns()`` gives name -> array (SI names, e.g. ``P_N``, ``F_N``, ``area_m2``, for
+    physical data); ``to_csv()`` and ``to_dataframe()`` write them.
+    """
+
+    data: dict = field(default_factory=dict)
+    parameters: dict = field(default_factory=dict, compare=False)
+
+    def __len__(self) -> int:
+        return int(np.size(next(iter(self.data.values())))) if self.data else 0
+
+    def __getattr__(self, name):
+        data = self.__dict__.get("data", {})
+        if name in data:
+            return data[name]
+        raise AttributeError(name)
+
+    def columns(self) -> dict:
+        """Column name -> array."""
+        return {k: np.asarray(v, dtype=float) for k, v in self.data.items()}
+
+    def to_csv(self, path_or_buffer=None):
+        """CSV text of the columns (written atomically to a path if given)."""
+        from .._csv import columns_to_csv
+
+        return columns_to_csv(self.columns(), path_or_buffer)
+
+    def to_dataframe(self):
+        """The curve as a pandas DataFrame (needs ``asperity[frame]``)."""
+        from .._csv import columns_to_dataframe
+
+        return columns_to_dataframe(self.columns(), self.parameters)
+
+
+class FitModel:
+    """Base of the fit models (see the module docstring); subclasses set the class attributes.
+
+    Attributes
+    ----------
+    name : str
+        Registry name.
+    kinds : tuple of str
+        Data kinds it predicts (``friction``, ``force``, ``pull_off``).
+    physical : bool or None
+        True: SI data only; False: dimensionless data only; None: either.
+    """
+
+    name = ""
+    kinds: tuple[str, ...] = ()
+    physical: bool | None = None
+    title = ""
+
+    def check(self, data: Dataset) -> None:
+        """Raise ValueError unless this model can fit ``data``."""
+        if data.kind not in self.kinds:
+            raise ValueError(f"model {self.name!r} cannot fit {data.kind} data; it fits {', '.join(self.kinds)} data")
+        if self.physical is True and not data.physical:
+            raise ValueError(f"model {self.name!r} works in SI units: give physical data (units in the header, "
+                             "e.g. 'load [nN]', 'friction [nN]')")
+        if self.physical is False and data.physical:
+            raise ValueError(f"model {self.name!r} is dimensionless here; for physical data give a contact")
+
+    def specs(self, data: Dataset) -> dict[str, ParameterSpec]:
+        """Parameters (name -> :class:`ParameterSpec`) for fitting ``data``."""
+        raise NotImplementedError
+
+    def predict(self, data: Dataset, v: dict) -> tuple[np.ndarray, int]:
+        """Model values at the data's points and the number of points outside its domain."""
+        if data.kind == "friction":
+            F, clamped = self.friction(data.x, v)
+            return (F / data.x if data.quantity == "mu" else F), clamped
+        if data.kind == "force":
+            return self.force(data.x, v)
+        return self.pull_off(data, v), 0
+
+    def friction(self, P, v):  # pragma: no cover - every model overrides what it supports
+        raise NotImplementedError
+
+    def force(self, d, v):  # pragma: no cover
+        raise NotImplementedError
+
+    def pull_off(self, data, v):  # pragma: no cover
+        raise NotImplementedError
+
+    def curve(self, data: Dataset, v: dict, x: np.ndarray):
+        """The fitted curve at ``x`` (a grid over the data's range): a :class:`FitCurve`."""
+        unit = "_N" if data.physical else ""
+        if data.kind == "friction":
+            F, _ = self.friction(x, v)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                mu = np.where(x > 0, F / np.where(x > 0, x, 1.0), np.nan)
+            return FitCurve({f"P{unit}": x, f"F{unit}": F, "mu": mu}, dict(v))
+        if data.kind == "force":
+            return FitCurve({"d_m" if data.physical else "d": x, f"P{unit}": self.force(x, v)[0]}, dict(v))
+        return FitCurve({"row": data.x, f"pull_off{unit}": self.pull_off(data, v)}, dict(v))
+
+    def derived(self, v: dict) -> dict:
+        """Quantities that follow from the fitted parameters (e.g. the Maugis parameter)."""
+        return {}

@@ -1,0 +1,367 @@
+r"""The fitting itself: parameters, weighted residuals, lmfit's minimizer, the uncertainty analysis.
+
+One fit is a list of *terms*, a data set and its model each, and a set of *global*
+parameters: a parameter shared by several terms is one global parameter; a joint fit gives
+the others one copy per term (``alpha_1``, ``alpha_2``).
+
+**Parameters** become :class:`lmfit.Parameters`: a log-scaled quantity
+(:mod:`asperity.quantities`) that varies is fitted as ``log10_<name>`` with ``<name> =
+10**log10_<name>`` an expression, so bounds, starts and results stay in linear units while
+the optimiser works in decades.  User expressions (``expr``) are in linear names.
+
+**Residuals** of a point: :math:`r_i = (f(x_i) - y_i)/s_i` with
+
+* ``weights='column'``: :math:`s_i = \sqrt{\sigma_{y,i}^2 + (f'(x_i)\sigma_{x,i})^2}`, the
+  stated uncertainties (the x part, effective variance, Orear 1982, when an x uncertainty
+  column is given; :math:`f'` by central differences at the current parameters);
+* ``'relative'``: :math:`s_i = |y_i|`, relative residuals (friction spans decades);
+* ``'none'``: uniform, :math:`s_i = \mathrm{rms}(y)` of the data set, so that data sets in
+  different units (normal force in newtons, relative friction) weigh alike in a joint fit;
+* ``'auto'`` (default): ``column`` when the data carry uncertainties, else ``relative``
+  for friction and pull-off data and ``none`` for force-separation data (which cross zero).
+
+**Minimiser**: :meth:`lmfit.Minimizer.least_squares` (SciPy's trust-region reflective
+method with bounds, ``x_scale='jac'``), loss ``linear``, ``soft_l1`` or ``huber``.  A robust
+loss first fits with the linear loss, then refits with ``f_scale`` = 1.4826 x the median
+absolute residual of that fit, so "outlier" means a few times the typical scatter.
+
+References
+----------
+.. [1] J. Orear, "Least squares when both variables have uncertainties", Am. J. Phys. 50
+   (1982) 912.
+.. [2] M. Newville et al., LMFIT: Non-Linear Least-Squares Minimization and Curve-Fitting
+   for Python, https://lmfit.github.io/lmfit-py/.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import OrderedDict
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from .._optional import require
+from .data import Dataset
+from .models import FitModel, ParameterSpec
+
+__all__ = ["WEIGHTS", "LOSSES", "PENALTY", "Term", "GlobalParameter", "Problem", "build_problem"]
+
+#: Weighting choices.
+WEIGHTS = ("auto", "column", "relative", "none")
+#: Loss functions (scipy.optimize.least_squares).
+LOSSES = ("linear", "soft_l1", "huber")
+#: Residual of a point whose model cannot be evaluated at the parameters tried.
+PENALTY = 1e100
+#: A log-scaled parameter is fitted within 10**-LOG_LIMIT .. 10**LOG_LIMIT.
+LOG_LIMIT = 300.0
+_LOG_PREFIX = "log10_"
+_CACHE = 64
+
+
+@dataclass
+class GlobalParameter:
+    """A parameter of the fit as lmfit sees it (linear units), with its origin."""
+
+    name: str
+    spec: ParameterSpec
+    value: float | None
+    vary: bool
+    lo: float
+    hi: float
+    expr: str | None = None
+    members: list = field(default_factory=list)  # (term index, local name)
+
+    @property
+    def fitted_name(self) -> str:
+        """The lmfit name the optimiser varies: ``log10_<name>`` for a log-scaled parameter."""
+        return f"{_LOG_PREFIX}{self.name}" if self.log else self.name
+
+    @property
+    def log(self) -> bool:
+        return self.spec.log and (self.vary or self.expr is not None)
+
+
+class Term:
+    """One data set, its model and the map from the model's parameter names to global ones."""
+
+    def __init__(self, data: Dataset, model: FitModel, names: dict[str, str]):
+        self.data, self.model, self.names = data, model, names
+        self._cache: OrderedDict = OrderedDict()
+        self.evaluations = 0
+
+    def local(self, values: dict) -> dict:
+        return {loc: values[glob] for loc, glob in self.names.items()}
+
+    def predict(self, local: dict, data: Dataset | None = None):
+        """(model values at the data points, number clamped), cached by the parameter values."""
+        data = self.data if data is None else data
+        key = (id(data), tuple(sorted((k, float(v)) for k, v in local.items())))
+        hit = self._cache.get(key)
+        if hit is None:
+            self.evaluations += 1
+            hit = self.model.predict(data, local)
+            self._cache[key] = hit
+            if len(self._cache) > _CACHE:
+                self._cache.popitem(last=False)
+        return hit
+
+    def sigma(self, local: dict, weights: str) -> np.ndarray:
+        """The residual scale s_i of each point under ``weights``."""
+        d = self.data
+        if weights == "none":
+            rms = float(np.sqrt(np.mean(d.y**2)))
+            return np.full(len(d), rms if rms > 0 else 1.0)
+        if weights == "relative":
+            return np.abs(d.y)
+        var = np.zeros(len(d)) if d.y_err is None else d.y_err**2
+        if d.x_err is not None:
+            var = var + (self.slope(local) * d.x_err) ** 2
+        return np.sqrt(var)
+
+    def slope(self, local: dict) -> np.ndarray:
+        """df/dx at the data points, central differences (for the x uncertainties)."""
+        d = self.data
+        h = 1e-6 * np.maximum(np.abs(d.x), np.max(np.abs(d.x)) * 1e-6 + 1e-300)
+        if d.quantity == "mu":
+            h = np.minimum(h, 0.5 * d.x)
+        up = self.predict(local, self._shifted(h))[0]
+        down = self.predict(local, self._shifted(-h))[0]
+        return (up - down) / (2.0 * h)
+
+    def _shifted(self, h):
+        key = ("shift", float(h[0]), float(h[-1]))
+        cached = self._cache.get(key)
+        if cached is None:
+            cached = replace(self.data, x=self.data.x + h, y_err=None, x_err=None)
+            self._cache[key] = cached
+        return cached
+
+
+def resolve_weights(data: Dataset, weights: str) -> str:
+    """The weighting actually used for ``data`` (``'auto'`` resolved; ``'column'`` checked)."""
+    if weights not in WEIGHTS:
+        raise ValueError(f"weights must be one of {', '.join(WEIGHTS)}, got {weights!r}")
+    has = data.y_err is not None or data.x_err is not None
+    if weights == "auto":
+        return "column" if has else ("none" if data.kind == "force" else "relative")
+    if weights == "column" and not has:
+        raise ValueError(f"weights='column' needs an uncertainty column ({data.name}: e.g. F_err, mu_err, P_err, "
+                         "friction_err [nN]); use 'relative' or 'none'")
+    if weights == "relative" and np.any(data.y == 0):
+        i = int(np.flatnonzero(data.y == 0)[0])
+        raise ValueError(f"weights='relative' needs nonzero data, {data.name} has {data.y_name} = 0 at row {i + 1}; "
+                         "use weights='none'")
+    return weights
+
+
+@dataclass
+class Problem:
+    """The terms, the global parameters and the options of one fit."""
+
+    terms: list
+    params: dict  # name -> GlobalParameter, in order
+    weights: list  # resolved, per term
+    loss: str
+    failures: int = 0
+    last_failure: str = ""
+
+    @property
+    def n_points(self) -> int:
+        return sum(len(t.data) for t in self.terms)
+
+    @property
+    def free(self) -> list:
+        return [p for p in self.params.values() if p.vary and p.expr is None]
+
+    def values(self, lmfit_params) -> dict:
+        """Global linear values from lmfit's parameters."""
+        v = lmfit_params.valuesdict()
+        return {name: float(v[name]) for name in self.params}
+
+    def residual(self, lmfit_params) -> np.ndarray:
+        """Weighted residuals of every term, concatenated.
+
+        Where a model cannot be evaluated (parameters outside its domain, tried by the
+        optimiser or a profile), the term's residuals are :data:`PENALTY`, so the step is
+        rejected; :attr:`failures` counts such evaluations.
+        """
+        try:
+            values = self.values(lmfit_params)
+        except (RuntimeError, OverflowError, ValueError) as err:  # an expression lmfit cannot evaluate
+            self.failures += 1
+            self.last_failure = str(err)
+            return np.full(self.n_points, PENALTY)
+        out = []
+        for term, weights in zip(self.terms, self.weights, strict=True):
+            local = term.local(values)
+            try:
+                r = (term.predict(local)[0] - term.data.y) / term.sigma(local, weights)
+            except (ValueError, ZeroDivisionError, OverflowError, FloatingPointError) as err:
+                self.failures += 1
+                self.last_failure = str(err)
+                r = np.full(len(term.data), PENALTY)
+            out.append(r)
+        r = np.concatenate(out)
+        return np.where(np.isfinite(r), r, PENALTY)
+
+    def lmfit_parameters(self):
+        """The :class:`lmfit.Parameters` of the problem (see the module docstring)."""
+        lmfit = require("lmfit", purpose="fitting", extra="fit")
+        params = lmfit.Parameters()
+        later = []
+        for p in self.params.values():
+            if p.log:  # within +-LOG_LIMIT decades, so that 10**x stays finite
+                lo = max(math.log10(p.lo), -LOG_LIMIT) if p.lo > 0 else -LOG_LIMIT
+                hi = min(math.log10(p.hi), LOG_LIMIT) if math.isfinite(p.hi) else LOG_LIMIT
+                if p.expr is None:
+                    params.add(p.fitted_name, value=math.log10(p.value), min=lo, max=hi, vary=p.vary)
+                else:
+                    later.append((p.fitted_name, f"log10({p.expr})"))
+                later.append((p.name, f"10**{p.fitted_name}"))
+            elif p.expr is None:
+                params.add(p.name, value=p.value, min=p.lo, max=p.hi, vary=p.vary)
+            else:
+                later.append((p.name, p.expr))
+        for name, expr in later:
+            params.add(name, expr=expr)
+        return params
+
+
+def _expand(option, name: str, params: dict, base_names: dict) -> dict:
+    """User keys (global names, or a base name meaning every copy) -> global names."""
+    if option is None:
+        return {}
+    items = option.items() if isinstance(option, dict) else ((k, None) for k in option)
+    out = {}
+    for key, value in items:
+        key = str(key)
+        targets = [key] if key in params else base_names.get(key, [])
+        if not targets:
+            raise ValueError(f"{name}: unknown parameter {key!r}; the parameters are {', '.join(params)}")
+        for t in targets:
+            out[t] = value
+    return out
+
+
+def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
+                  weights="auto", loss="linear") -> Problem:
+    """Check the options and build the :class:`Problem` of a fit (see :mod:`asperity.fit` for the options).
+
+    Raises
+    ------
+    ValueError
+        For a model that cannot fit its data, an unknown parameter, a parameter both fixed and
+        varied, a bound that excludes the start value, a log-scaled parameter at or below 0,
+        a missing value, fewer points than free parameters, or an unknown weighting or loss.
+    """
+    if loss not in LOSSES:
+        raise ValueError(f"loss must be one of {', '.join(LOSSES)}, got {loss!r}")
+    terms, params, base_names = [], {}, {}
+    joint = len(datasets) > 1
+    share_all = shared is None
+    shared = set() if shared is None else {str(s) for s in shared}
+    for i, (data, model) in enumerate(zip(datasets, models, strict=True)):
+        model.check(data)
+        names = {}
+        for local, spec in model.specs(data).items():
+            if local in data.conditions:  # given per row by the data
+                continue
+            glob = local if (not joint or share_all or local in shared) else f"{local}_{i + 1}"
+            names[local] = glob
+            base_names.setdefault(local, [])
+            if glob not in base_names[local]:
+                base_names[local].append(glob)
+            if glob not in params:
+                params[glob] = GlobalParameter(glob, spec, spec.value, spec.vary, spec.lo, spec.hi)
+            params[glob].members.append((i, local))
+        terms.append(Term(data, model, names))
+    unknown = shared - set(base_names)
+    if unknown:
+        raise ValueError(f"shared: unknown parameter(s) {', '.join(sorted(unknown))}; the parameters are "
+                         f"{', '.join(base_names)}")
+    vary_set = None if vary is None else _expand(vary, "vary", params, base_names)
+    fix = _expand(fix, "fix", params, base_names)
+    start = _expand(start, "start", params, base_names)
+    bounds = _expand(bounds, "bounds", params, base_names)
+    expr = _expand(expr, "expr", params, base_names)
+    both = sorted(set(fix) & set(vary_set or ()))
+    if both:
+        raise ValueError(f"parameter {both[0]!r} is both fixed and varied; give it in one of fix and vary")
+    for name, p in params.items():
+        if vary_set is not None:
+            p.vary = name in vary_set
+        if name in fix:
+            p.vary, p.value = False, _number(fix[name], f"fix {name}")
+        if name in start:
+            p.value = _number(start[name], f"start {name}")
+        if name in expr:
+            p.expr = str(expr[name])
+        if name in bounds:
+            p.lo, p.hi = _bounds(bounds[name], name)
+    _fill_starts(terms, params)
+    _check_values(params)
+    problem = Problem(terms, params, [resolve_weights(t.data, weights) for t in terms], loss)
+    n_free = len(problem.free)
+    if n_free == 0:
+        raise ValueError("no parameter varies: give at least one in vary (--vary)")
+    if problem.n_points < n_free:
+        raise ValueError(f"{problem.n_points} data point{'s' if problem.n_points != 1 else ''} cannot fix {n_free} "
+                         f"free parameter{'s' if n_free != 1 else ''} "
+                         f"({', '.join(p.name for p in problem.free)}): fix some or add data")
+    return problem
+
+
+def _number(value, what) -> float:
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{what}: expected a number, got {value!r}") from None
+    if isinstance(value, bool) or not math.isfinite(x):
+        raise ValueError(f"{what}: expected a finite number, got {value!r}")
+    return x
+
+
+def _bounds(value, name):
+    try:
+        lo, hi = value
+    except (TypeError, ValueError):
+        raise ValueError(f"bounds {name}: expected (lo, hi), got {value!r}") from None
+    lo = -math.inf if lo is None else float(lo)
+    hi = math.inf if hi is None else float(hi)
+    if not lo < hi or math.isnan(lo) or math.isnan(hi):
+        raise ValueError(f"bounds {name}: need lo < hi, got ({lo!r}, {hi!r})")
+    return lo, hi
+
+
+def _fill_starts(terms, params):
+    """Ask each model for data-driven starts of the parameters still without a value."""
+    for term in terms:
+        local = {loc: params[glob].value for loc, glob in term.names.items()}
+        if all(v is not None for v in local.values()) or not hasattr(term.model, "start"):
+            continue
+        rows = {k: float(np.median(v)) for k, v in term.data.conditions.items()}
+        filled = term.model.start(term.data, {**local, **rows})
+        for loc, glob in term.names.items():
+            if params[glob].value is None and filled.get(loc) is not None:
+                params[glob].value = float(filled[loc])
+
+
+def _check_values(params):
+    for name, p in params.items():
+        if p.value is None and p.expr is None:
+            raise ValueError(f"parameter {name!r} ({p.spec.meaning}, {p.spec.unit}) has no value: give it "
+                             f"(fix {name}=... to hold it, or start {name}=... to vary it from there)")
+        if p.expr is not None:
+            continue
+        if not math.isfinite(p.value):
+            raise ValueError(f"parameter {name!r} must be finite, got {p.value!r}")
+        q_lo, q_hi = p.spec.lo, p.spec.hi
+        if p.value < q_lo or p.value > q_hi or (p.vary and p.spec.log and p.value <= 0):
+            raise ValueError(f"parameter {name!r} = {p.value:g} is outside its valid range ({p.spec.meaning}; "
+                             f"{q_lo:g} .. {q_hi:g}{', > 0: fitted in log10' if p.spec.log else ''})")
+        if not (p.lo <= p.value <= p.hi):
+            raise ValueError(f"the bounds of {name} [{p.lo:g}, {p.hi:g}] exclude its start value {p.value:g}")
+        if p.log and p.lo < 0:
+            raise ValueError(f"bounds of {name}: the lower bound must be >= 0 ({name} is fitted in log10), "
+                             f"got {p.lo:g}")

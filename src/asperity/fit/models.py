@@ -1,0 +1,78 @@
+r"""The models a fit can use, by name: their parameters and what they predict for each kind of data.
+
+=============  ===============================================================  ==========================
+name           friction :math:`F(P)`                                            also fits
+=============  ===============================================================  ==========================
+``gw``         the multi-asperity model (:mod:`asperity.fit.gw`)                force-separation, pull-off
+``hertz``      :math:`\tau\pi a^2`, :func:`~asperity.hertz.hertz_contact_radius`  force-separation
+``jkr``        :math:`\tau\pi a^2`, :func:`~asperity.jkr.jkr_contact_radius`      force-separation, pull-off
+``dmt``        :math:`\tau\pi a^2`, :func:`~asperity.dmt.dmt_contact_radius`      force-separation, pull-off
+``md``         :math:`\tau\pi a^2`, exact :mod:`~asperity.maugis_dugdale_load`    force-separation, pull-off
+``cos``        :func:`~asperity.cos.cos_friction`, :math:`(F_0, P_c, \alpha_t)`
+``amontons``   :func:`~asperity.amontons.amontons_friction`, :math:`\mu_0(P + P_0)`
+=============  ===============================================================  ==========================
+
+The single-asperity laws (``hertz``, ``jkr``, ``dmt``, ``md``) work in SI units, on physical
+data: parameters ``w_J_m2``, ``R_m``, ``E_star_Pa``, ``tau_Pa`` (and ``sigma0_Pa`` for
+Maugis-Dugdale); by default ``w_J_m2``, ``tau_Pa`` (and ``sigma0_Pa``) vary while the tip
+radius ``R_m`` and the modulus ``E_star_Pa`` are fixed, since a friction-load curve
+determines only :math:`\tau(R/K)^{2/3}` and :math:`wR` of JKR and DMT (see docs/fitting.md).
+The empirical forms ``cos`` and ``amontons`` take either units.  A normal-force curve of a
+single asperity is the force at penetration :math:`\delta = d_0 - d` (displacement
+control, the stable branch), with the offset ``d0_m`` fixed at 0 unless varied.
+
+Each model is a :class:`FitModel`: :meth:`~FitModel.specs` gives its parameters
+(:class:`ParameterSpec`: start value, bounds and log scale from
+:mod:`asperity.quantities`, starts estimated from the data where possible),
+:meth:`~FitModel.predict` the model's values at the data's points, :meth:`~FitModel.curve`
+the fitted curve on a grid.  Loads the model cannot carry (below its pull-off load) are
+compared with the value at its pull-off, and counted, so that the fit stays continuous;
+the result warns when any remain at the best fit.  :data:`MODELS` is the registry;
+:func:`get_model` looks a name up.
+"""
+
+from __future__ import annotations
+
+from .base import FitCurve, FitModel, ParameterSpec, parameter_spec
+from .laws import AmontonsFit, COSFit, DMTFit, HertzFit, JKRFit, MDFit
+
+__all__ = ["ParameterSpec", "FitCurve", "FitModel", "MODELS", "get_model", "parameter_spec"]
+
+
+def _gw():
+    from .gw import GWFit
+
+    return GWFit
+
+
+#: Model name -> class (``gw`` resolved on first use).
+MODELS = {"gw": None, "hertz": HertzFit, "jkr": JKRFit, "dmt": DMTFit, "md": MDFit, "cos": COSFit,
+          "amontons": AmontonsFit}
+
+
+def get_model(name, *, material=None, contact=None) -> FitModel:
+    """The :class:`FitModel` called ``name`` (a name of :data:`MODELS`, case-insensitive).
+
+    Parameters
+    ----------
+    name : str or FitModel
+        Model name, or a model (returned as is).
+    material : Material or str, optional
+        Material of the single-asperity laws (their ``E_star_Pa``, and ``w_J_m2`` and
+        ``sigma0_Pa`` starts).
+    contact : PhysicalContact, optional
+        The physical multi-asperity contact (``gw`` on physical data).
+
+    Raises
+    ------
+    ValueError
+        For an unknown name (the message lists the valid ones).
+    """
+    if isinstance(name, FitModel):
+        return name
+    key = str(name).strip().lower()
+    if key not in MODELS:
+        raise ValueError(f"unknown model {name!r}; valid: {', '.join(MODELS)}")
+    if key == "gw":
+        return _gw()(contact=contact, material=material)
+    return MODELS[key](material=material)

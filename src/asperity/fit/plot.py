@@ -1,0 +1,83 @@
+"""The figure of a fit: data with the fitted curve, and the weighted residuals below.
+
+One column per data set.  Friction-load data spanning more than a decade of positive loads
+are drawn on log-log axes.  matplotlib is imported lazily (``asperity[plot]``), only its
+object-oriented API is used (no pyplot), and a path is written atomically.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .._atomic import atomic_path
+from .._optional import require
+
+__all__ = ["plot_fit"]
+
+_LABELS = {"friction": ("load", "friction"), "force": ("separation", "normal force"),
+           "pull_off": ("row (condition)", "pull-off force")}
+
+
+def _curve_xy(curve, data):
+    cols = curve.columns()
+    if data.kind == "friction":
+        x = cols.get("P_N", cols.get("P"))
+        y = cols["mu"] if data.quantity == "mu" else cols.get("F_N", cols.get("F"))
+    elif data.kind == "force":
+        x, y = cols.get("d_m", cols.get("d")), cols.get("P_N", cols.get("P"))
+    else:
+        x, y = cols["row"], cols.get("pull_off_N", cols.get("pull_off"))
+    return np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+
+
+def plot_fit(result, path=None, *, fmt=None):
+    """Draw ``result`` (a :class:`~asperity.fit.result.FitResult`); save to ``path`` if given.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    Raises
+    ------
+    asperity._optional.MissingDependency
+        Without matplotlib.
+    """
+    require("matplotlib", purpose="plotting a fit", extra="plot")
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    n = len(result.datasets)
+    fig = Figure(figsize=(4.6 * n, 5.2), layout="constrained")
+    FigureCanvasAgg(fig)
+    axes = fig.subplots(2, n, squeeze=False, sharex="col", gridspec_kw={"height_ratios": [3, 1]})
+    start = 0
+    for k, (data, curve) in enumerate(zip(result.datasets, result.curves, strict=True)):
+        top, bottom = axes[0, k], axes[1, k]
+        r = result.residuals[start:start + len(data)]
+        start += len(data)
+        xl, yl = _LABELS[data.kind]
+        unit_x = {"friction": " (N)", "force": " (m)"}.get(data.kind, "") if data.physical else ""
+        unit_y = " (N)" if data.physical and data.quantity != "mu" else ""
+        top.errorbar(data.x, data.y, yerr=data.y_err, xerr=data.x_err, fmt="o", ms=4, color="k", label="data")
+        cx, cy = _curve_xy(curve, data)
+        order = np.argsort(cx)
+        top.plot(cx[order], cy[order], "-", color="C3", label=f"fit: {result.model}")
+        log = data.kind == "friction" and np.min(data.x) > 0 and np.max(data.x) / np.min(data.x) > 10
+        if log and np.all(data.y > 0):
+            top.set_xscale("log")
+            top.set_yscale("log")
+        top.set_ylabel(("friction coefficient" if data.quantity == "mu" else yl) + unit_y)
+        top.set_title(data.name or data.kind)
+        top.legend(loc="best", fontsize="small")
+        bottom.axhline(0.0, color="0.6", lw=0.8)
+        bottom.plot(data.x, r, "o", ms=3, color="C0")
+        bottom.set_xlabel(xl + unit_x)
+        bottom.set_ylabel(f"residual ({result.weights[k]})")
+    fig.suptitle(f"{result.model}: chi-square {result.chisqr:.4g}, AIC {result.aic:.4g}", fontsize="medium")
+    if path is not None:
+        import os
+
+        fmt = fmt or os.path.splitext(os.fspath(path))[1][1:].lower() or "png"
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, dpi=150, format=fmt)
+    return fig

@@ -1,0 +1,366 @@
+r"""Reading measured data from CSV files: columns found by their header names and units.
+
+:func:`read_data` reads a CSV file.  Columns are found by their header:
+
+* dimensionless: ``P``, ``F`` or ``mu``, ``d``, ``P_off``, with ``F_err``, ``mu_err``,
+  ``P_err``, ``d_err``, ``P_off_err``;
+* physical, the unit in brackets: ``load [mN]``, ``friction [nN]``, ``separation [nm]``,
+  ``pull_off [nN]``, ``friction_err [nN]``, or in SI names: ``P_N``, ``F_N``, ``d_m``.
+  Other spellings: ``normal_force``/``force`` (load), ``friction_force``/``lateral_force``,
+  ``friction_coefficient``, ``distance``/``gap`` (separation), ``pull_off_force``/
+  ``adhesion_force``.  A physical column without a unit takes one from ``units``
+  (``{"load": "mN", "friction": "nN", "separation": "nm"}``; ``load`` also serves normal
+  and pull-off forces); an uncertainty column without a unit has its value column's unit.
+
+Comment lines start with ``#``; the delimiter is a comma, a tab or a semicolon (that of
+the header line).  Refused, with a :class:`ValueError` naming the row and column: a missing,
+unreadable or empty file, a missing or ambiguous column (``F`` and ``mu``; ``P`` and
+``load [mN]``), a non-numeric or infinite cell, a NaN (empty) cell unless
+``drop_nan=True`` (then the row is dropped and counted), negative friction or
+coefficient, a coefficient at a load <= 0, a zero or negative uncertainty or pull-off
+force, an unknown unit or one of the wrong dimension, dimensionless and physical columns
+mixed, a column unit that contradicts ``units``.  Columns that are none of these are
+ignored and named in :attr:`Dataset.notes`.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+import re
+
+import numpy as np
+
+from ..quantities import FIT_PARAMETERS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
+from ..units import parse_quantity
+from .data import KINDS, MAX_ROWS, Dataset
+
+__all__ = ["ROLES", "read_data", "as_dataset"]
+
+#: Column roles and their spellings (lower case).  The first is the dimensionless symbol.
+ROLES = {
+    "load": ("p", "load", "normal_force", "normal_load", "force"),
+    "friction": ("f", "friction", "friction_force", "lateral_force"),
+    "mu": ("mu", "friction_coefficient"),
+    "separation": ("d", "separation", "distance", "gap"),
+    "pull_off": ("p_off", "pull_off", "pull_off_force", "adhesion_force"),
+}
+_SI = {"load": "N", "friction": "N", "separation": "m", "pull_off": "N", "mu": ""}
+_UNIT_KEY = {"load": "load", "pull_off": "load", "friction": "friction", "separation": "separation"}
+_SUFFIX = {"_n": "N", "_m": "m"}
+_HEADER = re.compile(r"^\s*(?P<base>[^\[\]]*?)\s*(\[(?P<unit>[^\[\]]*)\])?\s*$")
+_NAN_TEXT = {"", "nan", "na", "n/a", "none", "null"}
+
+
+def _condition_names() -> dict:
+    """Header base (lower case) -> (fit name, SI unit or '' if dimensionless)."""
+    out = {}
+    for registry in (MODEL_PARAMETERS, FIT_PARAMETERS):
+        for q in registry.values():
+            out[q.name.lower()] = (q.name, "")
+    for q in PHYSICAL_PARAMETERS.values():
+        if q.si_name is None:  # a dimensionless physical quantity (alpha_n)
+            out[q.name.lower()] = (q.name, "")
+            continue
+        out[q.name.lower()] = (q.si_name, q.si_unit)
+        out[q.si_name.lower()] = (q.si_name, q.si_unit)
+    return out
+
+
+def _classify(header: str):
+    """(role, is_err, unit or None, SI-suffix unit or None) of one header cell; role None if unknown."""
+    m = _HEADER.match(header)
+    base = (m.group("base") if m else header).strip().lower().replace(" ", "_").replace("-", "_")
+    unit = m.group("unit").strip() if m and m.group("unit") is not None else None
+    suffix_unit = None
+    for suffix, si in _SUFFIX.items():
+        stem = base[: -len(suffix)]
+        if base.endswith(suffix) and _role(stem.removesuffix("_err"))[0]:
+            base, suffix_unit = stem, si
+            break
+    is_err = False
+    for tail in ("_err", "_error", "_sigma"):
+        if base.endswith(tail):
+            base, is_err = base[: -len(tail)], True
+            break
+    role, symbol = _role(base)
+    return role, is_err, unit, suffix_unit, symbol, base
+
+
+def _role(base):
+    for role, names in ROLES.items():
+        if base in names:
+            return role, base == names[0]
+    return None, False
+
+
+def _factor(unit_text: str, role: str, header: str) -> float:
+    si = _SI[role]
+    if unit_text in ("", "1", "-") and si == "":
+        return 1.0
+    if si == "":
+        raise ValueError(f"column {header!r}: a friction coefficient is dimensionless, got the unit {unit_text!r}")
+    value = parse_quantity(f"1 {unit_text}", si, f"column {header!r}")
+    if not value > 0:
+        raise ValueError(f"column {header!r}: unit {unit_text!r} is not a positive multiple of {si}")
+    return value
+
+
+def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
+    """Read a CSV file of friction-load, force-separation or pull-off data (see the module docstring).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The CSV file: a header line of column names, then one line per point.
+    kind : {'friction', 'force', 'pull_off'}, optional
+        What the file must hold; default: found from its columns.
+    units : dict, optional
+        Units of physical columns whose header has none, by role: ``{"load": "mN",
+        "friction": "nN", "separation": "nm"}`` (pint syntax; ``load`` also serves normal
+        and pull-off forces).  A header unit that contradicts it is an error.
+    drop_nan : bool
+        Drop rows with an empty or NaN cell in a column used, and count them
+        (:attr:`Dataset.n_dropped`); default: such a row is an error.
+
+    Returns
+    -------
+    Dataset
+
+    Raises
+    ------
+    ValueError
+        For every problem listed in the module docstring, naming the row and column.
+    """
+    units = dict(units or {})
+    for key in units:
+        if key not in ("load", "friction", "separation"):
+            raise ValueError(f"units: unknown role {key!r}; give load, friction or separation")
+    text, name = _read_text(path)
+    lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
+             if line.strip() and not line.lstrip().startswith("#")]
+    if not lines:
+        raise ValueError(f"{name}: no header line (the file is empty or holds only comments)")
+    header_line, header = lines[0]
+    delimiter = next((d for d in (",", "\t", ";") if d in header), ",")
+    rows = list(csv.reader([line for _, line in lines], delimiter=delimiter))
+    headers = [h.strip() for h in rows[0]]
+    if len(set(headers)) != len(headers):
+        dup = next(h for h in headers if headers.count(h) > 1)
+        raise ValueError(f"{name}: column {dup!r} appears twice in the header")
+    data_rows = rows[1:]
+    if not data_rows:
+        raise ValueError(f"{name}: no data rows below the header")
+    if len(data_rows) > MAX_ROWS:
+        raise ValueError(f"{name}: {len(data_rows)} rows, more than MAX_ROWS = {MAX_ROWS}")
+    columns, conditions, ignored = _columns(headers, units, name)
+    kind = _kind(columns, kind, name)
+    used = _used(columns, kind, name)
+    physical = _physical(columns, used, name)
+    values = {key: [] for key in (*used, *conditions)}
+    index = {**{k: columns[k][0] for k in used}, **{k: v[0] for k, v in conditions.items()}}
+    factor = {**{k: columns[k][1] for k in used}, **{k: v[1] for k, v in conditions.items()}}
+    dropped = 0
+    for r, row in enumerate(data_rows):
+        line_no = lines[r + 1][0]
+        if len(row) != len(headers):
+            raise ValueError(f"{name}, line {line_no}: {len(row)} cells, the header has {len(headers)}")
+        cells = {k: _number(row[i], name, line_no, headers[i]) for k, i in index.items()}
+        if any(np.isnan(v) for v in cells.values()):
+            if not drop_nan:
+                bad = next(headers[index[k]] for k, v in cells.items() if np.isnan(v))
+                raise ValueError(f"{name}, line {line_no}: empty or NaN cell in column {bad!r} (drop such rows with "
+                                 "drop_nan=True, --drop-nan on the command line)")
+            dropped += 1
+            continue
+        for k, v in cells.items():
+            values[k].append(v * factor[k])
+    if not values[used[0]]:
+        raise ValueError(f"{name}: every row holds a NaN; nothing left to fit")
+    notes = []
+    if ignored:
+        notes.append(f"{name}: ignored column(s) {', '.join(map(repr, ignored))}")
+    if dropped:
+        notes.append(f"{name}: dropped {dropped} row(s) holding NaN")
+    return _dataset(kind, values, used, conditions, physical, name, dropped, notes)
+
+
+def _read_text(path):
+    name = os.fspath(path) if isinstance(path, str | os.PathLike) else None
+    if name is None:
+        raise ValueError(f"path must be a file name, got {path!r}")
+    shown = os.path.basename(name) or name
+    try:
+        with open(name, "rb") as fh:
+            raw = fh.read(64 * 1024 * 1024 + 1)
+    except OSError as err:
+        raise ValueError(f"cannot read data file {name!r}: {err.strerror or err}") from None
+    if len(raw) > 64 * 1024 * 1024:
+        raise ValueError(f"{shown}: larger than 64 MB; not a data file of at most {MAX_ROWS} rows")
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise ValueError(f"{shown}: not a text file (not UTF-8)") from None
+    if "\x00" in text:
+        raise ValueError(f"{shown}: not a text file (holds NUL bytes)")
+    return text, shown
+
+
+def _columns(headers, units, name):
+    """Role key ('load', 'friction_err', ...) -> (column index, factor to SI, physical, header).
+
+    ``physical`` is None for a friction coefficient (dimensionless either way).
+    """
+    columns, conditions, ignored, pending = {}, {}, [], []
+    cond_names = _condition_names()
+    for i, header in enumerate(headers):
+        role, is_err, unit, suffix_unit, symbol, base = _classify(header)
+        if role is None:
+            if base in cond_names and not is_err:
+                conditions[cond_names[base][0]] = (i, _condition_factor(cond_names[base], unit, header, name))
+            else:
+                ignored.append(header)
+            continue
+        key = f"{role}_err" if is_err else role
+        if key in columns or key in pending:
+            first = columns[key][3] if key in columns else next(h for k, h, _ in pending if k == key)
+            raise ValueError(f"{name}: ambiguous columns {first!r} and {header!r} (both the "
+                             f"{key.replace('_', ' ')}); keep one")
+        if unit is not None and suffix_unit is not None:
+            raise ValueError(f"{name}: column {header!r} has two units")
+        unit = unit if unit is not None else suffix_unit
+        if role == "mu":
+            columns[key] = (i, _factor(unit or "", "mu", header), None, header)
+            continue
+        flag = units.get(_UNIT_KEY[role])
+        if flag is not None:
+            if unit is None:
+                unit = flag
+            elif not math.isclose(_factor(unit, role, header), _factor(flag, role, header), rel_tol=1e-12):
+                raise ValueError(f"{name}: inconsistent units: column {header!r} says [{unit}] but the "
+                                 f"{_UNIT_KEY[role]} unit given is {flag!r}")
+        if unit is not None:
+            columns[key] = (i, _factor(unit, role, header), True, header)
+        elif is_err:
+            pending.append((key, header, i))  # takes its value column's unit
+        elif symbol:
+            columns[key] = (i, 1.0, False, header)  # the paper's dimensionless symbol
+        else:
+            example = f"{header} [{'nN' if _SI[role] == 'N' else 'nm'}]"
+            raise ValueError(f"{name}: column {header!r} has no unit: write it in brackets ({example!r}) or give "
+                             f"the {_UNIT_KEY[role]} unit (units={{'{_UNIT_KEY[role]}': ...}}, "
+                             f"--{_UNIT_KEY[role]}-unit)")
+    for key, header, i in pending:
+        value = columns.get(key.removesuffix("_err"))
+        factor, physical = (value[1], value[2]) if value is not None else (1.0, False)
+        columns[key] = (i, factor, physical, header)
+    return columns, conditions, ignored
+
+
+def _condition_factor(entry, unit, header, name):
+    fit_name, si = entry
+    if not si:
+        if unit not in (None, "", "1", "-"):
+            raise ValueError(f"{name}: column {header!r}: {fit_name} is dimensionless, got the unit {unit!r}")
+        return 1.0
+    return parse_quantity(f"1 {unit or si}", si, f"column {header!r}")
+
+
+def _kind(columns, kind, name):
+    found = [k for k, role in (("force", "separation"), ("pull_off", "pull_off")) if role in columns]
+    if "friction" in columns or "mu" in columns:
+        found.append("friction")
+    if "friction" in columns and "mu" in columns:
+        raise ValueError(f"{name}: ambiguous columns: both a friction force ({columns['friction'][3]!r}) and a "
+                         f"coefficient ({columns['mu'][3]!r}); keep one")
+    if kind is not None:
+        if kind not in KINDS:
+            raise ValueError(f"kind must be one of {', '.join(KINDS)}, got {kind!r}")
+        if kind not in found:
+            need = {"friction": "a load and a friction (F, mu, friction [nN])", "force":
+                    "a separation (d, separation [nm]) and a normal force (P, force [nN])",
+                    "pull_off": "a pull-off force (P_off, pull_off [nN])"}[kind]
+            raise ValueError(f"{name}: missing column: {kind} data need {need}")
+        return kind
+    if len(found) != 1:
+        raise ValueError(f"{name}: " + ("missing columns: found no friction (F, mu, friction [nN]), separation "
+                                        "(d, separation [nm]) or pull-off (P_off, pull_off [nN]) column"
+                                        if not found else f"ambiguous data: columns of {' and '.join(found)} data; "
+                                        "give the kind"))
+    return found[0]
+
+
+def _used(columns, kind, name):
+    x, y = {"friction": ("load", "mu" if "mu" in columns else "friction"), "force": ("separation", "load"),
+            "pull_off": (None, "pull_off")}[kind]
+    for role in (x, y):
+        if role is not None and role not in columns:
+            what = {"load": "a load (P, load [mN]) or normal force (force [nN])",
+                    "separation": "a separation", "friction": "a friction"}[role]
+            raise ValueError(f"{name}: missing column: {kind} data need {what}")
+    used = [k for k in (y, x, f"{y}_err", f"{x}_err") if k in columns]
+    for key in columns:
+        if key not in used and not key.endswith("_err"):
+            raise ValueError(f"{name}: column {columns[key][3]!r} does not belong in {kind} data")
+    return used
+
+
+def _physical(columns, used, name):
+    """True if the columns used are physical (SI), False if dimensionless; mixed is an error."""
+    flags = [(columns[k][3], columns[k][2]) for k in used if columns[k][2] is not None]
+    dimless = [h for h, physical in flags if not physical]
+    physical = [h for h, p in flags if p]
+    if dimless and physical:
+        raise ValueError(f"{name}: inconsistent units: {dimless[0]!r} is dimensionless but {physical[0]!r} has a unit")
+    return bool(physical)
+
+
+def _number(cell: str, name, line_no, header) -> float:
+    text = cell.strip()
+    if text.lower() in _NAN_TEXT:
+        return float("nan")
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(f"{name}, line {line_no}, column {header!r}: {text!r} is not a number") from None
+    if np.isinf(value):
+        raise ValueError(f"{name}, line {line_no}, column {header!r}: {text!r} is not finite")
+    return value
+
+
+def _dataset(kind, values, used, conditions, physical, name, dropped, notes) -> Dataset:
+    arr = {k: np.asarray(v, dtype=float) for k, v in values.items()}
+    cond = {k: arr[k] for k in conditions}
+    if kind == "pull_off":
+        return Dataset("pull_off", np.arange(arr["pull_off"].size, dtype=float), arr["pull_off"], "pull_off",
+                       physical, y_err=arr.get("pull_off_err"), conditions=cond, name=name, n_dropped=dropped,
+                       notes=tuple(notes))
+    if cond:
+        notes = [*notes, f"{name}: ignored condition column(s) {', '.join(cond)} (only pull-off data use them)"]
+    if kind == "force":
+        return Dataset("force", arr["separation"], arr["load"], "P", physical, y_err=arr.get("load_err"),
+                       x_err=arr.get("separation_err"), name=name, n_dropped=dropped, notes=tuple(notes))
+    y = "mu" if "mu" in arr else "friction"
+    return Dataset("friction", arr["load"], arr[y], "mu" if y == "mu" else "F", physical, y_err=arr.get(f"{y}_err"),
+                   x_err=arr.get("load_err"), name=name, n_dropped=dropped, notes=tuple(notes))
+
+
+_KIND_NAMES = {"friction": "friction-load", "force": "force-separation", "pull_off": "pull-off"}
+
+
+def as_dataset(data, kind=None, units=None, drop_nan=False) -> Dataset:
+    """``data`` as a :class:`Dataset`: a Dataset (checked to be of ``kind``) or a CSV path read with :func:`read_data`.
+
+    Raises
+    ------
+    ValueError
+        For data of another kind, anything but a Dataset or a path, or a file :func:`read_data` refuses.
+    """
+    if isinstance(data, Dataset):
+        if kind is not None and data.kind != kind:
+            raise ValueError(f"expected {_KIND_NAMES[kind]} data, got {_KIND_NAMES[data.kind]} data ({data.name})")
+        return data
+    if isinstance(data, str | os.PathLike):
+        return read_data(data, kind=kind, units=units, drop_nan=drop_nan)
+    raise ValueError(f"data must be a Dataset or the path of a CSV file, got {type(data).__name__}")

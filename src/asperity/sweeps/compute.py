@@ -1,0 +1,113 @@
+"""One chunk of a sweep: a Model per parameter set, its curve and its pull-off.
+
+:func:`compute_chunk` is what a task runs, on a worker or in the driving process.  It
+takes only plain data (the chunk's parameter sets, the loads) and returns plain arrays,
+so it pickles cheaply.  A set outside the model's domain (the library raises
+:class:`ValueError`) gives NaN in every variable and its message; the chunk goes on.  A set
+computed under one of the library's validity warnings (:class:`asperity.AsperityWarning`,
+e.g. asperities past yield with the elastic law) keeps its numbers and its message holds the
+warning, prefixed ``note:``.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from .._warnings import AsperityWarning
+from ..curves import Model
+from ..friction_stress import HurtadoKim
+from ..physical import PhysicalContact
+from ..surface import Surface
+
+__all__ = ["compute_chunk", "compute_set"]
+
+_HK = ("tau_f1", "tau_f2", "a1", "a2")
+
+
+def compute_set(kind: str, params: dict, axis: str, values: np.ndarray) -> dict:
+    """Curve and pull-off of one parameter set, as a dict of output variables.
+
+    Parameters
+    ----------
+    kind : {'model', 'physical'}
+        Dimensionless parameters (alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2)
+        or a physical contact (material, sigma_s, R, eta, area in SI units).
+    params : dict
+        The set's parameters.
+    axis : {'P', 'd', 'P_N', 'd_m'}
+        Whether ``values`` are loads or separations (dimensionless or SI).
+    values : ndarray
+        The loads or separations.
+
+    Returns
+    -------
+    dict
+        Curve columns (one value per load or separation) and ``pull_off``, ``pull_off_d``
+        (``pull_off_N``, ``pull_off_d_m``, alpha, beta, gamma for a physical contact).
+
+    Raises
+    ------
+    ValueError
+        If the set lies outside the model's domain (e.g. a load below minus the pull-off).
+    """
+    if kind == "physical":
+        p = params
+        contact = PhysicalContact(p["material"], Surface(p["sigma_s"], p["R"], p["eta"], p["area"]))
+        curve = contact.load_curve(values) if axis == "P_N" else contact.separation_curve(values)
+        po = contact.pull_off()
+        out = curve.columns()  # SI names: d_m, P_N, F_N, mu, area_m2, pressure_Pa, contacts
+        out.update(pull_off_N=po.force, pull_off_d_m=po.d, alpha=contact.alpha, beta=contact.beta,
+                   gamma=contact.gamma)
+        return out
+    p = params
+    model = Model(p["alpha"], p["beta"], p["gamma"], nu=p["nu"], h_over_b=p["h_over_b"],
+                  friction=HurtadoKim(*(p[k] for k in _HK)))
+    curve = model.load_curve(values) if axis == "P" else model.separation_curve(values)
+    po = model.pull_off()
+    out = curve.columns()
+    out.update(pull_off=po.force, pull_off_d=po.d)
+    return out
+
+
+def compute_chunk(kind: str, sets: list[dict], axis: str, values: np.ndarray, variables: dict) -> dict:
+    """Every output variable for the parameter sets ``sets`` of one chunk.
+
+    Parameters
+    ----------
+    kind, axis, values :
+        As in :func:`compute_set`.
+    sets : list of dict
+        The chunk's parameter sets, in C order.
+    variables : dict
+        Output variable -> (meaning, unit, 'curve' or 'set') (:meth:`SweepSpec.variables`).
+
+    Returns
+    -------
+    dict
+        Each variable as an array of shape ``(len(sets), len(values))`` ('curve') or
+        ``(len(sets),)`` ('set'), and ``message``: '' for a set computed, ``'note: ...'``
+        for a set computed under a validity warning of the library, else the reason it was
+        not computed (its variables are NaN).
+    """
+    n, m = len(sets), values.size
+    out = {k: np.full((n, m) if where == "curve" else n, np.nan) for k, (_, _, where) in variables.items()}
+    messages = []
+    for i, params in enumerate(sets):
+        try:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", AsperityWarning)
+                result = compute_set(kind, params, axis, values)
+        except ValueError as err:
+            messages.append(str(err) or type(err).__name__)
+            continue
+        for w in caught:  # warnings of other libraries go on as they came
+            if not issubclass(w.category, AsperityWarning):
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+        notes = dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, AsperityWarning))
+        messages.append("; ".join(f"note: {note}" for note in notes))
+        for k in out:
+            out[k][i] = result[k]
+    out["message"] = np.array(messages, dtype=object)
+    return out

@@ -1,0 +1,252 @@
+"""Running a sweep: serially, on a local Dask cluster or on any Dask scheduler.
+
+:func:`sweep` builds the :class:`~asperity.sweeps.spec.SweepSpec`, opens the store,
+and hands the missing chunks to an executor:
+
+* ``scheduler=None`` (default): a :class:`distributed.LocalCluster` with one
+  single-threaded worker process per core when Dask's distributed scheduler is installed
+  (``pip install 'asperity[sweep]'``), else the calling process, one chunk after another;
+* ``"serial"``: the calling process; ``"local"``: a LocalCluster as above;
+* an address (``"tcp://10.0.0.1:8786"``) or a :class:`distributed.Client`: an existing
+  cluster (dask-jobqueue on a batch system, a Kubernetes Dask cluster, ...).
+
+Tasks are chunks of parameter sets (:func:`~asperity.sweeps.spec.default_chunk_sets`: up
+to 256, about half a second of work, so the scheduler's overhead of a few milliseconds
+per task is small; at least 32 chunks for smaller grids, to keep every worker busy).
+At most a few tasks per worker thread are in flight: each result is written to the
+store by this process as it arrives and then dropped, so memory is bounded whatever the
+grid's size.  Dask retries a task whose worker dies (``retries`` more for a task
+that raises), so a killed worker does not lose the sweep.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import sys
+
+from .._optional import require
+from .compute import compute_chunk
+from .spec import make_spec
+from .store import open_result, open_store
+
+__all__ = ["sweep", "CONNECT_TIMEOUT"]
+
+#: Seconds to wait for a scheduler given by its address.
+CONNECT_TIMEOUT = 20
+
+
+def _serial(spec, todo, done):
+    variables = spec.variables()
+    for k in todo:
+        done(k, compute_chunk(spec.kind, spec.chunk_parameters(k), spec.axis, spec.values, variables))
+
+
+def _on_dask(client, spec, todo, done, retries):
+    distributed = require("distributed", purpose="sweeps on Dask")
+    variables = spec.variables()
+    nthreads = max(1, sum(client.nthreads().values()))
+    window = 2 * nthreads + 1  # in flight at once: keeps every worker busy, memory bounded
+    # The loads travel with each task (their size is small beside the task's results): no
+    # scattered data that a lost worker would take with it.
+    values = spec.values
+    tag = spec.fingerprint()[:10]
+    pending = iter(todo)
+
+    def submit(k):
+        return client.submit(compute_chunk, spec.kind, spec.chunk_parameters(k), spec.axis, values, variables,
+                             key=f"asperity-sweep-{tag}-{k}", pure=False, retries=retries)
+
+    futures = {}
+    for k in pending:
+        futures[submit(k)] = k
+        if len(futures) >= window:
+            break
+    queue = distributed.as_completed(list(futures))
+    for future in queue:
+        k = futures.pop(future)
+        done(k, future.result())
+        future.release()
+        nxt = next(pending, None)
+        if nxt is not None:
+            new = submit(nxt)
+            futures[new] = nxt
+            queue.add(new)
+
+
+def _local_cluster():
+    distributed = require("distributed", purpose="sweeps on Dask")
+    n = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
+    cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                       dashboard_address=":0", silence_logs=logging.ERROR)
+    return cluster, distributed.Client(cluster)
+
+
+def _client(scheduler):
+    """(client, closer) for ``scheduler``; (None, None) for serial execution."""
+    if scheduler == "serial":
+        return None, None
+    if scheduler is None:
+        try:
+            require("distributed", purpose="sweeps on Dask")
+        except ImportError:
+            return None, None
+        scheduler = "local"
+    if scheduler == "local":
+        cluster, client = _local_cluster()
+
+        def close():
+            client.close()
+            cluster.close()
+        return client, close
+    if isinstance(scheduler, str):
+        distributed = require("distributed", purpose="sweeps on Dask")
+        try:
+            client = distributed.Client(scheduler, timeout=CONNECT_TIMEOUT)
+        except (OSError, TimeoutError, ValueError, TypeError) as err:
+            raise ValueError(f"cannot reach the Dask scheduler at {scheduler!r}: {err}") from None
+        return client, client.close
+    if hasattr(scheduler, "submit") and hasattr(scheduler, "nthreads"):
+        return scheduler, None  # the caller's client: the caller closes it
+    raise ValueError(f"scheduler must be None, 'serial', 'local', a scheduler address or a distributed.Client, "
+                     f"got {scheduler!r}")
+
+
+def _progress(total, enabled):
+    if not enabled:
+        return None
+    try:
+        tqdm = require("tqdm", purpose="the progress bar").tqdm
+    except ImportError:
+        return None
+    return tqdm(total=total, unit="set", desc="asperity sweep", file=sys.stderr, smoothing=0.1)
+
+
+def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=None, tau_f2=None, a1=None,
+          a2=None, material=None, sigma_s=None, R=None, eta=None, area=None, points=None, P=None, d=None,
+          out=None, scheduler=None, resume=False, chunk_sets=None, retries=3, progress=False):
+    r"""Curves and pull-off over a grid (or a list) of parameter sets, as an :class:`xarray.Dataset`.
+
+    Every parameter given as a 1-D array is a dimension of the grid (their outer product,
+    in the order of the signature); scalars are constant; the others take their defaults
+    (:mod:`asperity.quantities`).  ``points`` instead lists the sets (one dimension
+    ``point``).  Each set is one :class:`asperity.Model` (or
+    :class:`asperity.physical.PhysicalContact`): its curve at the loads ``P`` (or
+    separations ``d``) and its pull-off, exactly as a loop over Models would give them.
+
+    .. math::
+        \mu(\text{set}, P) = \bar F(\bar d)/P \ \text{on}\ \bar P(\bar d) = P,\qquad
+        P_{off}(\text{set}) = \max\big(0, -\min_{\bar d}\bar P(\bar d)\big)
+
+    Parameters
+    ----------
+    alpha, beta, gamma, nu, h_over_b : float or 1-D array_like, optional
+        Dimensionless model parameters (Eqs 7, 15, 16; ranges in :mod:`asperity.quantities`).
+    tau_f1, tau_f2, a1, a2 : float or 1-D array_like, optional
+        Hurtado-Kim constants (Eqs 2-3; defaults: the paper's).
+    material : str or list of str, optional
+        Material name(s) from :func:`asperity.materials.material_names`: a physical sweep,
+        with ``sigma_s`` (m), ``R`` (m), ``eta`` (1/m^2) and ``area`` (m^2).
+    sigma_s, R, eta, area : float or 1-D array_like, optional
+        Surface of a physical sweep (SI units), > 0.
+    points : dict of 1-D arrays or str, optional
+        A list of parameter sets: columns of equal length, or the path of a CSV file with a
+        header of parameter names.
+    P, d : 1-D array_like
+        Loads (:math:`P/NGb^2`; newtons in a physical sweep) or separations
+        (:math:`d/\sigma`; metres): give one.
+    out : str or path, optional
+        NetCDF file (``.nc``) or Zarr directory (``.zarr``) to stream the results to; None
+        keeps them in memory (small sweeps).
+    scheduler : None, 'serial', 'local', str or distributed.Client
+        Where to compute (module docstring): default a local Dask cluster if Dask is
+        installed, else serial.
+    resume : bool
+        Complete the interrupted sweep at ``out`` (computing only its missing chunks), or
+        reuse a finished one, if its arguments match.
+    chunk_sets : int, optional
+        Parameter sets per task, >= 1 (default: a 32nd of the sets, within 32..256).
+    retries : int
+        Extra tries of a task that raises on a worker (default 3).
+    progress : bool
+        Show a progress bar with ETA on standard error (needs tqdm).
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimensions: the varying parameters (or ``point``) and ``P``/``d`` (``P_N``/``d_m``);
+        variables ``mu``, ``d`` (or ``P``), ``F``, ``area``, ``pressure``, ``contacts``
+        (SI names in a physical sweep), ``pull_off``, ``pull_off_d`` and ``message`` ('';
+        ``'note: ...'`` when the library warned about the set's validity, e.g. yielded
+        asperities with the elastic law; or why a set lies outside the model's domain, its
+        values then NaN); units and meanings
+        in ``attrs``; the constant parameters, the asperity version and the sweep's
+        fingerprint in the global ``attrs``.  Backed by the file when ``out`` is given.
+
+    Raises
+    ------
+    ValueError
+        For an invalid parameter, or a store at ``out`` that holds another sweep (never
+        mixed) or that exists without ``resume``.
+    ImportError
+        Without xarray (``pip install 'asperity[sweep]'``), or netCDF4/zarr/dask as needed.
+
+    Examples
+    --------
+    >>> ds = sweep(alpha=[0.003, 0.01], beta=1000.0, gamma=1e-3, P=[1.0, 10.0], scheduler="serial")
+    >>> ds.mu.dims
+    ('alpha', 'P')
+    >>> round(float(ds.pull_off.sel(alpha=0.003)), 1)  # Table 1 prints 320.1
+    320.1
+
+    References
+    ----------
+    Adams et al., Eqs (1), (6), (10), (18), (21), Table 1.
+    """
+    require("xarray", purpose="sweeps")
+    if not isinstance(resume, bool) or not isinstance(progress, bool):
+        raise ValueError("resume and progress must be True or False")
+    if isinstance(retries, bool) or not isinstance(retries, int) or retries < 0:
+        raise ValueError(f"retries must be an integer >= 0, got {retries!r}")
+    parameters = dict(alpha=alpha, beta=beta, gamma=gamma, nu=nu, h_over_b=h_over_b, tau_f1=tau_f1,
+                      tau_f2=tau_f2, a1=a1, a2=a2, material=material, sigma_s=sigma_s, R=R, eta=eta, area=area)
+    spec = make_spec(parameters, points=points, P=P, d=d, chunk_sets=chunk_sets)
+    if not (scheduler is None or isinstance(scheduler, str) or hasattr(scheduler, "submit")):
+        raise ValueError(f"scheduler must be None, 'serial', 'local', a scheduler address or a distributed.Client, "
+                         f"got {scheduler!r}")
+    store = open_store(spec, out, resume=resume)
+    if store is None:  # a finished sweep of the same arguments
+        return open_result(out)
+    try:
+        todo = store.missing()
+        client, close = _client(scheduler) if todo else (None, None)  # before any file is made
+        bar = None
+        try:
+            store.start()
+            bar = _progress(sum(_sets(spec, k) for k in todo), progress)
+
+            def done(k, result):
+                store.write(k, result)
+                if bar is not None:
+                    bar.update(_sets(spec, k))
+            if client is None:
+                _serial(spec, todo, done)
+            else:
+                _on_dask(client, spec, todo, done, retries)
+        finally:
+            if close is not None:
+                close()
+            if bar is not None:
+                bar.close()
+    except BaseException:
+        store.close()
+        raise
+    return store.finish()
+
+
+def _sets(spec, k) -> int:
+    region = spec.chunk_region(k)
+    n = 1
+    for s in region:
+        n *= s.stop - s.start
+    return n

@@ -1,0 +1,103 @@
+"""``asperity bem`` gives what asperity.validation.validate_surface gives, and refuses bad input in one line."""
+
+import json
+
+import numpy as np
+import pytest
+
+pytest.importorskip("ContactMechanics")
+pytest.importorskip("pint")
+
+from asperity.quantities import VALIDATION_COLUMNS  # noqa: E402
+from asperity.validation import validate_surface  # noqa: E402
+from asperity.validation.surfaces import synthetic_surface  # noqa: E402
+
+from .helpers import one_line_error, rows_of, run, strict_json  # noqa: E402
+
+# Elastic comparisons on gold, which yields at these loads, up to real areas beyond 10 % of the nominal
+# area (what the comparison is for): the plasticity and area notes are expected.
+pytestmark = [pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning"),
+              pytest.mark.filterwarnings("ignore::asperity.physical_results.AreaFractionWarning")]
+
+
+
+@pytest.fixture(scope="module")
+def scan(tmp_path_factory):
+    path = tmp_path_factory.mktemp("bem") / "scan.npy"
+    topo = synthetic_surface("self-affine", 4e-6, 48, short_cutoff=4e-6 / 8, seed=5)
+    np.save(path, np.asarray(topo.heights()) * 1e9)  # heights in nm
+    return path
+
+
+ARGS = ["--size", "4um,4um", "--unit", "nm", "--material", "Au", "--quiet"]
+
+
+def api(scan, loads, **kwargs):
+    return validate_surface(scan, loads, material="Au", physical_sizes=(4e-6, 4e-6), unit="nm", **kwargs)
+
+
+@pytest.mark.parametrize("load, values", [("1mN:10mN:3", np.geomspace(1e-3, 1e-2, 3)),
+                                          ("1mN,5000uN", [1e-3, 5e-3]), ("0.001N", [1e-3])])
+def test_csv_equals_api(capsys, scan, load, values):
+    code, out, err = run(capsys, "bem", str(scan), *ARGS, "--load", load, "--format", "csv")
+    assert code == 0, err
+    rows = rows_of(out)
+    expected = api(scan, values).columns()
+    assert list(rows[0]) == list(VALIDATION_COLUMNS)
+    for name in ("P_N", "area_bem_m2", "area_spectral_m2", "gap_bem_m", "sep_bem_m", "spots_bem"):
+        np.testing.assert_allclose([float(r[name]) for r in rows], expected[name], rtol=1e-12)
+
+
+def test_json_grid_interaction_periodic_and_plot(capsys, scan, tmp_path):
+    png, out_file = tmp_path / "b.png", tmp_path / "b.json"
+    code, out, err = run(capsys, "bem", str(scan), *ARGS, "--load", "1mN,3mN", "--grid", "24", "--periodic",
+                         "--interaction", "cgp2008", "--format", "json", "-o", str(out_file), "--plot", str(png))
+    assert code == 0, err
+    got = strict_json(out_file.read_text())
+    expected = api(scan, [1e-3, 3e-3], grid=24, periodic=True, interaction="cgp2008")
+    assert got["parameters"]["nb_grid_pts"] == [24, 24] and got["interaction"] == "cgp2008"
+    assert got["contacts"] == strict_json(json.dumps(
+        {m: c.to_dict() for m, c in expected.contacts.items()}))
+    np.testing.assert_allclose(got["table"]["area_bem_m2"], expected.columns()["area_bem_m2"], rtol=1e-12)
+    np.testing.assert_allclose(got["table"]["sep_spectral_m"], expected.columns()["sep_spectral_m"], rtol=1e-12)
+    assert got["table"]["sep_bem_m"] == [None, None]
+    assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_table_and_progress(capsys, scan):
+    code, out, err = run(capsys, "bem", str(scan), *ARGS[:-1], "--load", "1mN", "--format", "table")
+    rows = [line for line in out.splitlines() if not line.startswith("#")]
+    assert code == 0 and rows[0].split()[0] == "P_N"
+    assert "bem" in err  # the progress report goes to standard error
+    # each summit method's contact, as the library describes it, above the table
+    contacts = api(scan, [1e-3]).contacts
+    expected = "".join(f"# summits {m}:\n" + "".join(f"# {line}\n" for line in c.describe().splitlines())
+                       for m, c in contacts.items())
+    assert out.startswith(expected) and list(contacts) == ["spectral", "detected"]
+    code, out, err = run(capsys, "bem", str(scan), *ARGS, "--load", "1mN", "--format", "csv", "--no-comments")
+    assert code == 0 and out.startswith("P_N,")
+
+
+@pytest.mark.parametrize("extra, needle", [
+    (["--load", "0mN"], "load"),
+    (["--load", "-1mN"], "load"),
+    (["--load", "1"], "unit"),
+    (["--load", "1mN,,2mN"], "empty item"),
+    (["--load", "1mN", "--grid", "8"], "grid"),
+    (["--load", "1mN", "--interaction", "bogus"], "interaction"),
+    (["--load", "1mN", "--material", "Unobtainium"], "Unobtainium"),
+])
+def test_bad_input_one_line(capsys, scan, extra, needle):
+    argv = ["bem", str(scan), "--size", "4um,4um", "--unit", "nm", "--material", "Au", "--quiet", *extra]
+    code, out, err = run(capsys, *argv)
+    assert one_line_error(code, err, needle), err
+    assert out == ""
+
+
+def test_unreadable_surface(capsys, tmp_path):
+    bad = tmp_path / "bad.txt"
+    bad.write_text("no heights here\n")
+    code, _, err = run(capsys, "bem", str(bad), *ARGS, "--load", "1mN")
+    assert one_line_error(code, err, "bad.txt")
+    code, _, err = run(capsys, "bem", str(tmp_path / "missing.npy"), *ARGS, "--load", "1mN")
+    assert one_line_error(code, err, "no such file")

@@ -1,0 +1,214 @@
+"""``asperity fit``: the command line gives exactly what asperity.fit gives, and refuses bad data in one line."""
+
+import json
+import math
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+import asperity
+from asperity import fit, jkr
+
+from .helpers import one_line_error, run, strict_json
+
+pytest.importorskip("lmfit")
+
+R, W, TAU, E_STAR = 20e-9, 0.3, 5e8, 1e11
+
+
+def write(path, header, rows):
+    path.write_text(header + "\n" + "".join(",".join(repr(float(x)) for x in row) + "\n" for row in rows))
+    return path
+
+
+@pytest.fixture
+def line(tmp_path):
+    P = np.linspace(0.5, 5.0, 12)
+    F = 0.3 * (P + 1.0) * (1 + 0.02 * np.random.default_rng(3).standard_normal(12))
+    return write(tmp_path / "line.csv", "P,F", zip(P, F, strict=True))
+
+
+@pytest.fixture
+def afm(tmp_path):
+    P = np.linspace(-1.3 * math.pi * W * R, 50e-9, 25)
+    F = TAU * math.pi * jkr.jkr_contact_radius(P, R=R, w=W, E_star=E_STAR) ** 2
+    F = F * (1 + 0.02 * np.random.default_rng(7).standard_normal(P.size))
+    return write(tmp_path / "afm.csv", "load [nN],friction [nN],friction_err [nN]",
+                 zip(P * 1e9, F * 1e9, 0.02 * F * 1e9, strict=True))
+
+
+def same(cli_text, result):
+    assert strict_json(cli_text) == json.loads(json.dumps(result.to_dict()))
+
+
+@pytest.mark.parametrize("argv, kwargs", [
+    (["--model", "amontons"], {"model": "amontons"}),
+    (["--model", "amontons", "--vary", "mu0", "--fix", "P0=1"], {"model": "amontons", "vary": ["mu0"],
+                                                                  "fix": {"P0": 1.0}}),
+    (["--model", "amontons", "--start", "P0=0.5,mu0=0.2", "--bounds", "P0=:3,mu0=0.01:"],
+     {"model": "amontons", "start": {"P0": 0.5, "mu0": 0.2}, "bounds": {"P0": (None, 3.0), "mu0": (0.01, None)}}),
+    (["--model", "cos", "--weights", "none", "--ci", "wald"], {"model": "cos", "weights": "none", "ci": "wald"}),
+    (["--model", "amontons", "--loss", "huber", "--weights", "relative"],
+     {"model": "amontons", "loss": "huber", "weights": "relative"}),
+    (["--model", "gw", "--vary", "gamma", "--fix", "alpha=0.01,beta=100", "--ci", "wald"],
+     {"model": "gw", "vary": ["gamma"], "fix": {"alpha": 0.01, "beta": 100.0}, "ci": "wald"}),
+])
+def test_json_is_the_library_result(capsys, line, argv, kwargs):
+    code, out, err = run(capsys, "fit", str(line), *argv, "--format", "json")
+    assert code == 0, err
+    same(out, fit.fit_friction_load(line, **kwargs))
+
+
+def test_laws_with_material_and_radius_and_units(capsys, afm):
+    from asperity.materials import material
+
+    si = material("Si")
+    code, out, err = run(capsys, "fit", str(afm), "--model", "jkr", "--material", "Si", "--radius", "20nm",
+                         "--format", "json")
+    assert code == 0, err
+    same(out, fit.fit_friction_load(afm, "jkr", material=si, fix={"R_m": 20e-9}))
+    code, out, err = run(capsys, "fit", str(afm), "--model", "jkr", "--fix", "E_star_Pa=100GPa,R_m=20nm",
+                         "--vary", "w_J_m2,tau_Pa", "--format", "json")
+    assert code == 0, err
+    res = fit.fit_friction_load(afm, "jkr", vary=["w_J_m2", "tau_Pa"], fix={"E_star_Pa": 1e11, "R_m": 2e-8})
+    same(out, res)
+    assert res.values["w_J_m2"] == pytest.approx(W, rel=0.1) and res.weights == ("column",)
+
+
+def test_compare_json_is_ranked_by_aic(capsys, afm):
+    code, out, err = run(capsys, "fit", str(afm), "--compare", "jkr,dmt,amontons", "--fix",
+                         "E_star_Pa=1e11,R_m=2e-8", "--format", "json")
+    assert code == 0, err
+    listed = strict_json(out)
+    table = fit.compare_models(afm, ["jkr", "dmt", "amontons"], fix={"E_star_Pa": 1e11, "R_m": 2e-8})
+    assert listed == json.loads(json.dumps(table.to_list()))
+    assert [d["model"] for d in listed][0] == "jkr"
+    assert [d["aic"] for d in listed] == sorted(d["aic"] for d in listed)
+
+
+def test_joint_fit_of_several_files(capsys, tmp_path):
+    P = np.linspace(0.5, 5.0, 10)
+    a = write(tmp_path / "a.csv", "P,F", zip(P, 0.3 * (P + 1.0), strict=True))
+    b = write(tmp_path / "b.csv", "P,F", zip(P, 0.3 * (P + 2.0), strict=True))
+    code, out, err = run(capsys, "fit", str(a), str(b), "--model", "amontons", "--shared", "mu0", "--weights",
+                         "none", "--format", "json")
+    assert code == 0, err
+    same(out, fit.fit_joint([a, b], "amontons", shared=["mu0"], weights="none"))
+    assert set(strict_json(out)["parameters"]) == {"mu0", "P0_1", "P0_2"}
+
+
+def test_units_flags_kind_and_drop_nan(capsys, tmp_path):
+    path = tmp_path / "u.csv"
+    path.write_text("load,friction\n1,0.6\n2,0.9\n,1.0\n3,1.2\n4,1.5\n")
+    code, out, err = run(capsys, "fit", str(path), "--model", "amontons", "--load-unit", "nN", "--friction-unit",
+                         "nN", "--drop-nan", "--kind", "friction", "--format", "json")
+    assert code == 0, err
+    res = fit.fit_friction_load(path, "amontons", units={"load": "nN", "friction": "nN"}, drop_nan=True)
+    same(out, res)
+    assert "dropped 1 row(s)" in " ".join(res.warnings)
+    sep = tmp_path / "sep.csv"
+    d = np.linspace(-2.0, 0.0, 8)
+    force = 4 / 3 * 1e11 * math.sqrt(2e-8) * (-d * 1e-9) ** 1.5 * 1e9
+    write(sep, "separation,force", zip(d, force, strict=True))
+    code, out, err = run(capsys, "fit", str(sep), "--model", "hertz", "--separation-unit", "nm", "--load-unit", "nN",
+                         "--vary", "R_m", "--start", "R_m=10nm", "--fix", "E_star_Pa=1e11", "--format", "json")
+    assert code == 0, err
+    assert strict_json(out)["parameters"]["R_m"]["value"] == pytest.approx(2e-8, rel=1e-8)
+
+
+@pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")  # gold yields: a note in the fit
+def test_gw_physical_with_the_contact_flags(capsys, tmp_path):
+    from asperity.physical import PhysicalContact, Surface
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
+    P = np.geomspace(1e-3, 1.0, 12)
+    path = write(tmp_path / "au.csv", "load [N],friction [N]", zip(P, contact.load_curve(P).F * 1.1, strict=True))
+    flags = ["--material", "Au", "--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2", "--area", "1mm^2"]
+    code, out, err = run(capsys, "fit", str(path), "--model", "gw", *flags, "--vary", "tau1_Pa,tau2_Pa",
+                         "--ci", "wald", "--format", "json")
+    assert code == 0, err
+    res = fit.fit_friction_load(path, "gw", contact=contact, vary=["tau1_Pa", "tau2_Pa"], ci="wald",
+                                fix={"R_m": 1e-6})
+    # the contact the fit starts from, then the fit (the old spellings are aliases)
+    assert strict_json(out) == json.loads(json.dumps({"contact": contact.to_dict(), **res.to_dict()}))
+    old = ["--material", "Au", "--sigma", "2nm", "--radius", "1um", "--density", "1e12/m^2", "--area", "1mm^2"]
+    code, out, err = run(capsys, "fit", str(path), "--model", "gw", *old, "--vary", "tau1_Pa,tau2_Pa",
+                         "--ci", "wald")
+    assert code == 0 and out == "".join(f"# {line}\n" for line in contact.describe().splitlines()) + res.summary()
+
+
+def test_table_output_plot_and_file(capsys, line, tmp_path):
+    pytest.importorskip("matplotlib")
+    out_file, png = tmp_path / "fit.txt", tmp_path / "fit.png"
+    code, out, err = run(capsys, "fit", str(line), "--model", "amontons", "-o", str(out_file), "--plot", str(png))
+    assert code == 0 and out == "" and err == ""
+    assert out_file.read_text() == fit.fit_friction_load(line, "amontons").summary()
+    assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+MISSING_COLUMN = "x,y\n1,2\n"
+CASES = {
+    "missing column": ("P,time\n1,2\n", [], "missing columns"),
+    "ambiguous columns": ("P,F,mu\n1,2,0.1\n", [], "ambiguous columns"),
+    "non-numeric cell": ("P,F\n1,2\n3,abc\n", [], "'abc' is not a number"),
+    "NaN row": ("P,F\n1,2\n3,\n", [], "empty or NaN cell in column 'F'"),
+    "negative friction": ("P,F\n1,2\n3,-4\n", [], "negative friction"),
+    "too few points": ("P,F\n1,2\n", [], "1 data point cannot fix 2 free parameters"),
+    "unknown unit": ("load [furlongs],friction [nN]\n1,2\n2,3\n3,4\n", [], "load"),
+    "wrong dimension": ("load [nm],friction [nN]\n1,2\n2,3\n3,4\n", [], "compatible with N"),
+    "inconsistent units": ("P,friction [nN]\n1,2\n2,3\n3,4\n", [], "inconsistent units"),
+    "unit against flag": ("load [mN],friction [nN]\n1,2\n2,3\n3,4\n", ["--load-unit", "uN"], "inconsistent units"),
+    "no unit": ("load,friction [nN]\n1,2\n2,3\n3,4\n", [], "has no unit"),
+    "fixed and varied": ("P,F\n1,2\n2,3\n3,4\n", ["--vary", "mu0", "--fix", "mu0=1"], "both fixed and varied"),
+    "bounds exclude start": ("P,F\n1,2\n2,3\n3,4\n", ["--bounds", "P0=5:6"], "exclude its start value"),
+    "bad fix": ("P,F\n1,2\n2,3\n3,4\n", ["--fix", "mu0"], "--fix: expected NAME=VALUE"),
+    "bad bound": ("P,F\n1,2\n2,3\n3,4\n", ["--bounds", "P0=1"], "--bounds: expected P0=LO:HI"),
+    "unknown parameter": ("P,F\n1,2\n2,3\n3,4\n", ["--vary", "zeta"], "unknown parameter 'zeta'"),
+    "empty file": ("", [], "no header line"),
+    "model and compare": ("P,F\n1,2\n2,3\n3,4\n", ["--compare", "cos"], "give --model or --compare, not both"),
+}
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_bad_data_one_line_exit_2_nothing_written(capsys, tmp_path, case):
+    text, extra, needle = CASES[case]
+    data = tmp_path / "bad.csv"
+    data.write_text(text)
+    out_file, png = tmp_path / "keep.txt", tmp_path / "fit.png"
+    out_file.write_text("old content")
+    code, out, err = run(capsys, "fit", str(data), "--model", "amontons", *extra, "-o", str(out_file),
+                         "--plot", str(png))
+    assert one_line_error(code, err, needle), err
+    assert out == "" and out_file.read_text() == "old content" and not png.exists()
+
+
+def test_missing_file_and_missing_lmfit(capsys, monkeypatch, line, tmp_path):
+    code, out, err = run(capsys, "fit", str(tmp_path / "nope.csv"))
+    assert one_line_error(code, err, "cannot read data file")
+    monkeypatch.setitem(sys.modules, "lmfit", None)
+    code, out, err = run(capsys, "fit", str(line), "--model", "amontons")
+    assert one_line_error(code, err, "fitting needs lmfit: pip install 'asperity[fit]'")
+
+
+def test_help_and_startup(capsys):
+    with pytest.raises(SystemExit) as exc:
+        asperity.cli.main(["fit", "--help"])
+    assert exc.value.code == 0
+    out = " ".join(capsys.readouterr().out.split())
+    for word in ("--model", "--vary", "--fix", "--bounds", "--compare", "--weights", "--loss", "--format", "--plot",
+                 "--drop-nan", "--load-unit", "friction [nN]", "w_J_m2", "--material", "--shared"):
+        assert word in out, word
+    probe = textwrap.dedent("""
+        import sys
+        from asperity.cli import main
+        try:
+            main(['fit', '--help'])
+        except SystemExit:
+            pass
+        print(sorted(m for m in sys.modules if m.split('.')[0] in ('numpy', 'scipy', 'lmfit', 'pandas')))
+    """)
+    res = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    assert res.stdout.strip().splitlines()[-1] == "[]"

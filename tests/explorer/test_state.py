@@ -1,0 +1,159 @@
+"""The explorer's state: fields from the registries, the query string round trip, robust links."""
+
+import dataclasses
+import math
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from asperity import heights
+from asperity.explorer.state import (
+    CUSTOM,
+    MAX_POINTS,
+    MODES,
+    START,
+    State,
+    default_state,
+    fields,
+    number_text,
+    parse_value,
+    state_from_query,
+)
+from asperity.materials import material, material_names
+from asperity.quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
+
+
+def test_fields_come_from_the_registries():
+    spec = fields()
+    for name in ("alpha", "beta", "gamma", "nu", "h_over_b", "tau_f1", "tau_f2", "a1", "a2"):
+        q = MODEL_PARAMETERS[name]
+        assert spec[name].quantity is q and spec[name].help == q.help()
+        expected = q.default if q.default not in (None, 0.0) else START[name]
+        assert spec[name].default == expected
+    for name in ("sigma_s", "R", "eta", "area", "b", "w", "E"):
+        q = PHYSICAL_PARAMETERS[name]
+        f = spec[q.si_name if name not in ("E",) else "E_Pa"]
+        assert f.quantity is q and f.unit == q.si_unit
+    assert spec["P_min"].quantity is CURVE_COLUMNS["P"] and spec["d_max"].quantity is CURVE_COLUMNS["d"]
+    assert spec["material"].choices == (*material_names(), CUSTOM)
+    assert spec["mode"].choices == MODES
+    au = material(START["material"])
+    assert (spec["E_Pa"].default, spec["material_nu"].default, spec["b_m"].default, spec["w_J_m2"].default) == \
+        (au.E, au.nu, au.b, au.w)
+
+
+def test_gaussian_only_without_a_distribution_registry(monkeypatch):
+    monkeypatch.delattr(heights, "DISTRIBUTIONS", raising=False)
+    assert fields()["heights"].choices == ("gaussian",)
+
+
+@dataclasses.dataclass(frozen=True)
+class ShiftedGaussian(heights.Gaussian):
+    """A test distribution with one parameter (its density is irrelevant here)."""
+
+    shift: float = 0.5
+    label: str = "not a number field"
+
+
+def test_a_distribution_registry_appears_with_its_parameters(monkeypatch):
+    monkeypatch.setattr(heights, "DISTRIBUTIONS", {"gaussian": heights.Gaussian, "shifted": ShiftedGaussian},
+                        raising=False)
+    spec = fields()
+    assert spec["heights"].choices == ("gaussian", "shifted")
+    assert spec["shifted_shift"].default == 0.5 and spec["shifted_shift"].group == "shifted"
+    assert "shifted_label" not in spec
+    s = default_state()
+    assert "shifted_shift" not in s.to_query()  # only with its distribution
+    chosen = s.replace(heights="shifted", shifted_shift=1.25)
+    assert "heights=shifted" in chosen.to_query() and "shifted_shift=1.25" in chosen.to_query()
+    back, messages = state_from_query(chosen.to_query())
+    assert back == chosen and messages == []
+
+
+@given(st.floats(allow_nan=False, allow_infinity=False))
+def test_number_text_reads_back_exactly(x):
+    text = number_text(x)
+    assert float(text) == x and math.copysign(1, float(text)) == math.copysign(1, x)
+    assert "+" not in text and len(text) <= len(repr(x)) + 1
+
+
+def _values():
+    """Random views: any mode, material, and numbers of any magnitude for the numeric fields."""
+    spec = fields()
+    number = st.floats(min_value=-1e300, max_value=1e300, allow_nan=False)
+    entries = {}
+    for key, f in spec.items():
+        if f.kind == "number":
+            entries[key] = number
+        elif f.kind == "integer":
+            entries[key] = st.integers(2, MAX_POINTS)
+        elif f.kind == "choice":
+            entries[key] = st.sampled_from(f.choices)
+        else:
+            entries[key] = st.booleans()
+    return st.fixed_dictionaries(entries)
+
+
+@given(_values())
+def test_query_string_round_trip(values):
+    state = State(values)
+    back, messages = state_from_query(state.to_query())
+    assert messages == []
+    for key in state.shown():
+        assert back[key] == state[key] and type(back[key]) is type(state[key]), key
+    assert back.to_query() == state.to_query()
+    if state["material"] != CUSTOM:
+        assert "E_Pa" not in state.to_query()
+
+
+def test_every_field_and_the_mode_are_in_the_query():
+    s = default_state().replace(material=CUSTOM, mode="physical")
+    keys = [pair.split("=")[0] for pair in s.to_query().split("&")]
+    assert keys == list(fields())
+
+
+def test_tornado_arguments_are_read():
+    # the Bokeh server hands the query over as {str: [bytes]}
+    state, messages = state_from_query({"alpha": [b"0.01"], "mode": [b"physical"], "sigma_s_m": [b"3nm"],
+                                        "n": [b"40", b"50"]})
+    assert messages == []
+    assert (state["alpha"], state.mode, state["n"]) == (0.01, "physical", 50)
+    assert state["sigma_s_m"] == pytest.approx(3e-9, rel=1e-15)
+
+
+@pytest.mark.parametrize("query, needle, key", [
+    ("alpha=abc", "alpha: expected a number, got 'abc'", "alpha"),
+    ("alpha=nan", "expected a finite number", "alpha"),
+    ("mode=3d", "mode: unknown choice '3d'", "mode"),
+    ("n=1", "from 2 to 2000", "n"),
+    ("n=2.5", "from 2 to 2000", "n"),
+    ("n=100000", "from 2 to 2000", "n"),
+    ("adhesion=maybe", "expected 1 or 0", "adhesion"),
+    ("sigma_s_m=2s", "sigma_s", "sigma_s_m"),
+    ("material=unobtainium", "unknown choice", "material"),
+    ("foo=1", "unknown parameter 'foo'", None),
+])
+def test_bad_links_keep_defaults_and_say_why(query, needle, key):
+    state, messages = state_from_query(query)
+    assert len(messages) == 1 and needle in messages[0], messages
+    assert state == default_state()
+
+
+def test_parse_value_with_units_and_errors():
+    spec = fields()
+    assert parse_value(spec["sigma_s_m"], "2 nm") == pytest.approx(2e-9, rel=1e-15)
+    assert parse_value(spec["E_Pa"], "79GPa") == pytest.approx(79e9, rel=1e-15)
+    assert parse_value(spec["P_max_N"], "10 mN") == pytest.approx(1e-2, rel=1e-15)
+    assert parse_value(spec["sigma_s_m"], "2e-9") == 2e-9  # a bare number is SI
+    assert parse_value(spec["alpha"], " 0.01 ") == 0.01
+    assert parse_value(spec["adhesion"], "0") is False
+    with pytest.raises(ValueError, match="sigma_s.*compatible with m"):
+        parse_value(spec["sigma_s_m"], "2 s")
+    with pytest.raises(ValueError, match=r"beta: expected a number, got ''"):
+        parse_value(spec["beta"], "")
+
+
+def test_replace_rejects_unknown_fields():
+    with pytest.raises(KeyError, match="nosuch"):
+        default_state().replace(nosuch=1)

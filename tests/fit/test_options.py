@@ -1,0 +1,125 @@
+"""Options of the fits: vary, fix, start, bounds, expr, weights, and every refusal."""
+
+import math
+
+import numpy as np
+import pytest
+
+from asperity.fit import (
+    compare_models,
+    fit_force_separation,
+    fit_friction_load,
+    fit_joint,
+    force_separation_data,
+    friction_load_data,
+    get_model,
+)
+
+P = np.linspace(0.5, 5.0, 10)
+LINE = friction_load_data(P, 0.3 * (P + 1.0))
+
+
+def test_vary_fix_start_bounds_expr():
+    res = fit_friction_load(LINE, "amontons", vary=["mu0"], fix={"P0": 1.0}, weights="none")
+    assert res.parameters["P0"].vary is False and res.parameters["P0"].method == "fixed"
+    assert res.values["mu0"] == pytest.approx(0.3, rel=1e-9) and res.n_free == 1
+    res = fit_friction_load(LINE, "amontons", bounds={"P0": (None, 0.5)}, start={"P0": 0.2}, ci="wald")
+    assert res.values["P0"] == pytest.approx(0.5, rel=1e-6) and "at its upper bound" in res.parameters["P0"].note
+    res = fit_friction_load(LINE, "amontons", expr={"P0": "mu0 * 10 / 3"}, weights="none")
+    assert res.values["P0"] == pytest.approx(res.values["mu0"] * 10 / 3) and res.parameters["P0"].method == "expr"
+
+
+def test_expression_between_log_scaled_parameters():
+    import asperity
+
+    Pg = np.geomspace(1.0, 1e3, 15)
+    data = friction_load_data(Pg, asperity.load_curve(Pg, 0.01, 1000.0, 1e-3,
+                                                      friction=asperity.HurtadoKim(0.02, 0.02)).F)
+    res = fit_friction_load(data, "gw", vary=["tau_f1"], fix={"alpha": 0.01, "beta": 1000.0, "gamma": 1e-3},
+                            expr={"tau_f2": "tau_f1"}, start={"tau_f1": 0.01}, ci="wald")
+    assert res.values["tau_f1"] == pytest.approx(0.02, rel=1e-6) and res.values["tau_f2"] == res.values["tau_f1"]
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"vary": ["mu0"], "fix": {"mu0": 0.3}}, "'mu0' is both fixed and varied"),
+    ({"fix": {"nope": 1.0}}, "fix: unknown parameter 'nope'; the parameters are mu0, P0"),
+    ({"vary": ["zeta"]}, "vary: unknown parameter 'zeta'"),
+    ({"bounds": {"P0": (2.0, 3.0)}, "start": {"P0": 1.0}}, r"the bounds of P0 \[2, 3\] exclude its start value 1"),
+    ({"bounds": {"P0": (3.0, 2.0)}}, "need lo < hi"),
+    ({"bounds": {"P0": 3.0}}, r"expected \(lo, hi\)"),
+    ({"bounds": {"mu0": (-1.0, 2.0)}}, "lower bound must be >= 0 .*fitted in log10"),
+    ({"start": {"mu0": -0.1}}, "outside its valid range"),
+    ({"fix": {"P0": "x"}}, "fix P0: expected a number"),
+    ({"fix": {"P0": float("nan")}}, "expected a finite number"),
+    ({"vary": []}, "no parameter varies"),
+    ({"weights": "column"}, "needs an uncertainty column"),
+    ({"weights": "squared"}, "weights must be one of"),
+    ({"loss": "cauchy"}, "loss must be one of"),
+    ({"ci": "bootstrap"}, "ci must be one of"),
+])
+def test_refused_options(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        fit_friction_load(LINE, "amontons", **kwargs)
+
+
+def test_refused_models_and_data():
+    with pytest.raises(ValueError, match="unknown model 'wgw'; valid: gw, hertz"):
+        fit_friction_load(LINE, "wgw")
+    with pytest.raises(ValueError, match="model 'jkr' works in SI units"):
+        fit_friction_load(LINE, "jkr")
+    with pytest.raises(ValueError, match="model 'cos' cannot fit force data"):
+        fit_force_separation(force_separation_data([0.0, 1.0], [1.0, 0.0]), "cos")
+    with pytest.raises(ValueError, match="model 'gw' on physical data needs a contact"):
+        fit_friction_load(friction_load_data(P, P, physical=True), "gw")
+    with pytest.raises(ValueError, match="expected friction-load data, got force-separation"):
+        fit_friction_load(force_separation_data([0.0, 1.0], [1.0, 0.0]))
+    with pytest.raises(ValueError, match="data must be a Dataset or the path"):
+        fit_friction_load([1, 2, 3])
+    with pytest.raises(ValueError, match=r"1 data point cannot fix 2 free parameters \(mu0, P0\)"):
+        fit_friction_load(friction_load_data([1.0], [0.3]), "amontons")
+    with pytest.raises(ValueError, match="parameter 'R_m' .* has no value"):
+        fit_friction_load(friction_load_data(P * 1e-9, P * 1e-9, physical=True), "jkr", fix={"E_star_Pa": 1e11})
+    with pytest.raises(ValueError, match="relative' needs nonzero data"):
+        fit_friction_load(friction_load_data([1.0, 2.0, 3.0], [0.0, 1.0, 2.0]), "amontons", weights="relative")
+
+
+def test_weights_auto():
+    assert fit_friction_load(LINE, "amontons").weights == ("relative",)
+    d = np.linspace(0.0, 2.0, 6)
+    sep = force_separation_data(-d * 1e-9, 4 / 3 * 1e11 * math.sqrt(2e-8) * (d * 1e-9) ** 1.5, physical=True)
+    res = fit_force_separation(sep, "hertz", vary=["R_m"], fix={"E_star_Pa": 1e11}, start={"R_m": 1e-8})
+    assert res.weights == ("none",) and res.values["R_m"] == pytest.approx(2e-8, rel=1e-8)
+
+
+def test_joint_names_copies_and_shares():
+    a = friction_load_data(P, 0.3 * (P + 1.0), name="a")
+    b = friction_load_data(P, 0.3 * (P + 2.0), name="b")
+    res = fit_joint([a, b], "amontons", shared=["mu0"], weights="none")
+    assert set(res.parameters) == {"mu0", "P0_1", "P0_2"} and len(res.curves) == 2 and res.n_points == 20
+    res = fit_joint([a, b], ["amontons", "cos"], shared=[], fix={"P0": 1.5}, weights="none")
+    assert res.model == "amontons+cos" and res.parameters["P0_1"].value == 1.5
+    with pytest.raises(ValueError, match="shared: unknown parameter"):
+        fit_joint([a, b], "amontons", shared=["nope"])
+    with pytest.raises(ValueError, match="one model .* for all 2 data sets or one per data set"):
+        fit_joint([a, b], ["amontons"])
+    with pytest.raises(ValueError, match="non-empty sequence"):
+        fit_joint(a, "amontons")
+
+
+def test_compare_options_and_refusals():
+    table = compare_models(LINE, ["amontons", "cos"], fix={"P0": 1.0}, weights="none")
+    assert {r.model for r in table.results} == {"amontons", "cos"}
+    amontons = next(r for r in table.results if r.model == "amontons")
+    assert amontons.parameters["P0"].vary is False
+    with pytest.raises(ValueError, match="fix: unknown parameter 'w_J_m2'"):
+        compare_models(LINE, ["amontons", "cos"], fix={"w_J_m2": 1.0})
+    with pytest.raises(ValueError, match="distinct names"):
+        compare_models(LINE, ["cos", "COS"])
+    with pytest.raises(ValueError, match="unknown model"):
+        compare_models(LINE, ["cos", "nope"])
+
+
+def test_get_model_registry():
+    assert get_model("JKR").name == "jkr"
+    m = get_model("gw")
+    assert get_model(m) is m

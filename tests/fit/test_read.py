@@ -1,0 +1,131 @@
+"""Reading data files: columns by header name and unit, and every refusal (one ValueError each)."""
+
+import numpy as np
+import pytest
+
+from asperity.fit import Dataset, force_separation_data, friction_load_data, pull_off_data, read_data
+
+
+def write(tmp_path, text, name="data.csv"):
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("text, kind, quantity, physical, x, y", [
+    ("P,F\n1,2\n3,4\n", "friction", "F", False, [1, 3], [2, 4]),
+    ("P,mu\n1,0.2\n3,0.1\n", "friction", "mu", False, [1, 3], [0.2, 0.1]),
+    ("load [mN],friction [nN]\n1,2\n", "friction", "F", True, [1e-3], [2e-9]),
+    ("P_N,F_N\n1e-3,2e-9\n", "friction", "F", True, [1e-3], [2e-9]),
+    ("normal_force [uN];lateral_force [nN]\n2;3\n", "friction", "F", True, [2e-6], [3e-9]),
+    ("load [mN]\tfriction_coefficient\n2\t0.3\n", "friction", "mu", True, [2e-3], [0.3]),
+    ("d,P\n-1,5\n2,-0.1\n", "force", "P", False, [-1, 2], [5, -0.1]),
+    ("separation [nm],force [nN]\n1,-2\n", "force", "P", True, [1e-9], [-2e-9]),
+    ("P_off\n3\n4\n", "pull_off", "pull_off", False, [0, 1], [3, 4]),
+    ("# synthetic\n\nP, F \n# a comment\n1, 2\n", "friction", "F", False, [1], [2]),
+    ("\ufeffP,F\n1,2\n", "friction", "F", False, [1], [2]),
+])
+def test_columns_found_by_header(tmp_path, text, kind, quantity, physical, x, y):
+    d = read_data(write(tmp_path, text))
+    assert (d.kind, d.quantity, d.physical) == (kind, quantity, physical)
+    np.testing.assert_allclose(d.x, x, rtol=1e-12)
+    np.testing.assert_allclose(d.y, y, rtol=1e-12)
+
+
+def test_uncertainties_and_their_units(tmp_path):
+    d = read_data(write(tmp_path, "load [mN],friction [nN],friction_err,load_err [uN]\n1,2,0.1,5\n2,3,0.2,5\n"))
+    np.testing.assert_allclose(d.y_err, [1e-10, 2e-10], rtol=1e-12)  # inherits [nN]
+    np.testing.assert_allclose(d.x_err, [5e-6, 5e-6], rtol=1e-12)
+    d = read_data(write(tmp_path, "P,F,F_err,P_err\n1,2,0.1,0.01\n"))
+    assert d.y_err[0] == 0.1 and d.x_err[0] == 0.01 and not d.physical
+
+
+def test_units_from_flags(tmp_path):
+    path = write(tmp_path, "load,friction\n1,2\n")
+    d = read_data(path, units={"load": "mN", "friction": "nN"})
+    assert d.physical and d.x[0] == pytest.approx(1e-3) and d.y[0] == pytest.approx(2e-9)
+    d = read_data(write(tmp_path, "load [mN],friction [nN]\n1,2\n"), units={"load": "millinewton"})
+    assert d.x[0] == pytest.approx(1e-3)  # the same unit twice is fine
+
+
+def test_pull_off_conditions(tmp_path):
+    d = read_data(write(tmp_path, "R [nm],pull_off [nN],pull_off_err\n10,2,0.1\n20,4,0.1\n"))
+    np.testing.assert_allclose(d.conditions["R_m"], [1e-8, 2e-8])
+    assert d.physical and d.y_err[0] == pytest.approx(1e-10)
+    d = read_data(write(tmp_path, "alpha,P_off\n0.002,2100\n0.003,320\n"))
+    np.testing.assert_array_equal(d.conditions["alpha"], [0.002, 0.003])
+
+
+def test_ignored_columns_and_dropped_rows_are_reported(tmp_path):
+    d = read_data(write(tmp_path, "time [s],P,F\n0,1,2\n1,,3\n2,3,4\n"), drop_nan=True)
+    assert len(d) == 2 and d.n_dropped == 1
+    assert any("ignored column(s) 'time [s]'" in n for n in d.notes)
+    assert any("dropped 1 row(s)" in n for n in d.notes)
+
+
+@pytest.mark.parametrize("text, kwargs, match", [
+    ("", {}, "no header line"),
+    ("# only a comment\n", {}, "no header line"),
+    ("P,F\n", {}, "no data rows"),
+    ("P,F,F\n1,2,3\n", {}, "appears twice"),
+    ("x,y\n1,2\n", {}, "missing columns: found no friction"),
+    ("P,time\n1,2\n", {}, "missing columns"),
+    ("F\n1\n", {}, "missing column: friction data need a load"),
+    ("P,F,mu\n1,2,0.3\n", {}, "ambiguous columns: both a friction force"),
+    ("P,load [mN],F\n1,2,3\n", {}, r"ambiguous columns 'P' and 'load \[mN\]'"),
+    ("P,F\n1,abc\n", {}, "line 2, column 'F': 'abc' is not a number"),
+    ("P,F\n1,inf\n", {}, "'inf' is not finite"),
+    ("P,F\n1,\n", {}, "line 2: empty or NaN cell in column 'F'.*--drop-nan"),
+    ("P,F\n1,nan\n", {}, "NaN cell"),
+    ("P,F\n1,nan\n", {"drop_nan": True}, "every row holds a NaN"),
+    ("P,F\n1,-2\n", {}, "negative friction: F = -2 at row 1"),
+    ("P,mu\n0,0.1\n", {}, "a friction coefficient needs a load > 0"),
+    ("P,F,F_err\n1,2,0\n", {}, r"y_err \(uncertainty\) must be > 0"),
+    ("P_off\n-1\n", {}, "pull-off forces must be > 0"),
+    ("load,friction [nN]\n1,2\n", {}, "column 'load' has no unit.*--load-unit"),
+    ("load [furlong],friction [nN]\n1,2\n", {}, "not a quantity with a unit|compatible"),
+    ("load [nm],friction [nN]\n1,2\n", {}, "compatible with N"),
+    ("load [mN],friction [nN]\n1,2\n", {"units": {"load": "nN"}}, "inconsistent units: column 'load \\[mN\\]'"),
+    ("P,friction [nN]\n1,2\n", {}, "inconsistent units: 'P' is dimensionless but 'friction \\[nN\\]'"),
+    ("P,F,F_err [nN]\n1,2,0.1\n", {}, "inconsistent units"),
+    ("mu [nN],P\n1,2\n", {}, "friction coefficient is dimensionless"),
+    ("P,F\n1,2,3\n", {}, "line 2: 3 cells, the header has 2"),
+    ("P,F\n1,2\n", {"kind": "force"}, "missing column: force data need a separation"),
+    ("P,F\n1,2\n", {"kind": "wear"}, "kind must be one of"),
+    ("P,F\n1,2\n", {"units": {"pressure": "Pa"}}, "units: unknown role 'pressure'"),
+    ("d,P,F\n1,2,3\n", {}, "ambiguous data: columns of force and friction data"),
+])
+def test_refused(tmp_path, text, kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        read_data(write(tmp_path, text), **kwargs)
+
+
+def test_unreadable_files(tmp_path):
+    with pytest.raises(ValueError, match="cannot read data file .*No such file"):
+        read_data(tmp_path / "missing.csv")
+    with pytest.raises(ValueError, match="cannot read data file .*directory"):
+        read_data(tmp_path)
+    (tmp_path / "bin.csv").write_bytes(b"\x89PNG\r\n\x1a\n\x00\x00")
+    with pytest.raises(ValueError, match="not a text file"):
+        read_data(tmp_path / "bin.csv")
+    with pytest.raises(ValueError, match="path must be a file name"):
+        read_data(42)
+
+
+def test_dataset_checks_its_arrays():
+    with pytest.raises(ValueError, match="same length"):
+        friction_load_data([1.0, 2.0], [1.0])
+    with pytest.raises(ValueError, match="give the friction force F or the coefficient mu"):
+        friction_load_data([1.0], [1.0], mu=[0.1])
+    with pytest.raises(ValueError, match="^x must be 1-D"):
+        friction_load_data([[1.0]], [[1.0]])
+    with pytest.raises(ValueError, match="^y must be finite"):
+        force_separation_data([1.0], [np.nan])
+    with pytest.raises(ValueError, match="^x must be a real number"):
+        friction_load_data([True], [1.0])
+    with pytest.raises(ValueError, match="condition 'alpha' must have one value per row"):
+        pull_off_data([1.0, 2.0], conditions={"alpha": [0.1]})
+    with pytest.raises(ValueError, match="kind must be one of"):
+        Dataset("wear", [1.0], [1.0], "F")
+    d = friction_load_data([1.0, 2.0], mu=[0.1, 0.2], physical=True)
+    assert (d.x_name, d.y_name) == ("P_N", "mu")

@@ -1,0 +1,122 @@
+"""Maugis-Dugdale under load control (asperity.maugis_dugdale_load): the inversion against the
+curve and the independent mpmath path, the JKR and DMT limits, the physical shell."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from asperity import dmt, jkr, reference
+from asperity import maugis_dugdale as md
+from asperity import maugis_dugdale_load as mdl
+
+R, W, E_STAR = 20e-9, 0.3, 1e11
+
+
+@given(st.floats(-6, 6), st.floats(0.0, 1.0), st.floats(-3, 8))
+def test_inverts_the_load_on_the_load_stable_branch(log_lam, frac, log_P):
+    lam = 10.0**log_lam
+    po = md.md_pull_off(lam, "load")
+    P = np.array([po.P + frac * (1.0 - po.P), 10.0**log_P])  # near the pull-off, and far above it
+    A, delta, t = mdl.md_solve_load(P, lam)
+    end = ~np.isfinite(t)  # the pull-off at the limit A -> 0 (t = inf): the closed-form end point
+    assert np.all(A[end] == po.A) and np.all(P[end] == po.P)
+    A2, P2, D2 = md.md_curve(t[~end], lam)
+    np.testing.assert_allclose(P2, P[~end], rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(A2, A[~end], rtol=1e-15)
+    np.testing.assert_allclose(D2, delta[~end], rtol=1e-15)
+    assert np.all(t <= po.t)  # before the first minimum of P(t): the load-stable branch
+
+
+@pytest.mark.parametrize("lam", [0.05, 0.5, 0.938, 1.0, 3.0, 30.0])
+@pytest.mark.parametrize("P", [-1.0, 0.0, 2.5, 1e3])
+def test_against_the_reference(lam, P):
+    if P < md.md_pull_off(lam, "load").P:
+        pytest.skip("below the pull-off")
+    A_ref, D_ref = reference.md_load_point(P, lam)
+    A, D, _ = mdl.md_solve_load([P], lam)
+    assert A[0] == pytest.approx(A_ref, rel=1e-12)
+    assert D[0] == pytest.approx(D_ref, rel=1e-11, abs=1e-12)
+
+
+def test_pull_off_is_the_end_of_the_branch():
+    for lam in (1e-3, 0.5, 2.0, 1e3):
+        po = md.md_pull_off(lam, "load")
+        A, D, t = mdl.md_solve_load([po.P], lam)
+        assert (A[0], D[0], t[0]) == (po.A, po.delta, po.t)
+        with pytest.raises(ValueError, match=r"^P \(load over pi w R\) must lie in"):
+            mdl.md_solve_load([po.P - 1e-9], lam)
+
+
+def test_radius_grows_with_the_load():
+    P = np.linspace(md.md_pull_off(0.7).P, 50.0, 400)
+    A = mdl.md_solve_load(P, 0.7)[0]
+    assert np.all(np.diff(A) > 0)
+
+
+@pytest.mark.parametrize("lam, tol", [(1e4, 1e-6), (1e8, 1e-13)])
+def test_jkr_limit(lam, tol):
+    P = np.linspace(-1.5 * math.pi * W * R * (1 - 1e-6), 80e-9, 50)
+    a = mdl.md_contact_radius(P, R=R, w=W, E_star=E_STAR, lam=lam)
+    np.testing.assert_allclose(a, jkr.jkr_contact_radius(P, R=R, w=W, E_star=E_STAR), rtol=tol)
+    pull = mdl.md_pull_off_force(R=R, w=W, E_star=E_STAR, lam=lam)
+    assert pull == pytest.approx(1.5 * math.pi * W * R, rel=tol)  # -3/2 pi w R
+
+
+@pytest.mark.parametrize("lam, tol", [(1e-6, 1e-5), (1e-12, 1e-11)])
+def test_dmt_limit(lam, tol):
+    P = np.linspace(-2.0 * math.pi * W * R * (1 - 1e-3), 80e-9, 50)
+    a = mdl.md_contact_radius(P, R=R, w=W, E_star=E_STAR, lam=lam)
+    np.testing.assert_allclose(a, dmt.dmt_contact_radius(P, R=R, w=W, E_star=E_STAR), rtol=tol)
+    pull = mdl.md_pull_off_force(R=R, w=W, E_star=E_STAR, lam=lam)
+    assert pull == pytest.approx(2.0 * math.pi * W * R, rel=tol)  # -2 pi w R
+
+
+def test_physical_shell_is_maugis_units():
+    K = 4 / 3 * E_STAR
+    sigma0 = 2e9
+    lam = float(md.md_lambda(R, W, E_STAR, sigma0))
+    assert lam == pytest.approx(2 * sigma0 * (R / (math.pi * W * K**2)) ** (1 / 3), rel=1e-15)
+    P = np.array([-5e-9, 0.0, 3e-8])
+    a = mdl.md_contact_radius(P, R=R, w=W, E_star=E_STAR, sigma0=sigma0)
+    A = mdl.md_solve_load(P / (math.pi * W * R), lam)[0]
+    np.testing.assert_allclose(a, A * (math.pi * W * R**2 / K) ** (1 / 3), rtol=1e-14)
+    np.testing.assert_array_equal(a, mdl.md_contact_radius(P, R=R, w=W, E_star=E_STAR, lam=lam))
+    # Force against penetration: the stable branch of md_solve
+    delta = np.array([-0.5, 0.0, 2.0]) * (math.pi**2 * W**2 * R / K**2) ** (1 / 3)
+    F = mdl.md_normal_force(delta, R=R, w=W, E_star=E_STAR, lam=lam)
+    np.testing.assert_allclose(F, md.md_solve([-0.5, 0.0, 2.0], lam)[1] * math.pi * W * R, rtol=1e-14)
+    assert mdl.md_pull_off_force(R=R, w=W, E_star=E_STAR, lam=lam, control="displacement") == pytest.approx(
+        -md.md_branch_end(lam).P * math.pi * W * R, rel=1e-15)
+
+
+def test_normal_force_limits():
+    delta = np.linspace(0.0, 2e-9, 9)
+    np.testing.assert_allclose(mdl.md_normal_force(delta, R=R, w=W, E_star=E_STAR, lam=1e-12),
+                               dmt.dmt_normal_force(delta, R=R, w=W, E_star=E_STAR), rtol=1e-5)
+    np.testing.assert_allclose(mdl.md_normal_force(delta, R=R, w=W, E_star=E_STAR, lam=1e8),
+                               jkr.jkr_normal_force(delta, R=R, w=W, E_star=E_STAR), rtol=1e-12)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"R": R, "w": W, "E_star": E_STAR}, "exactly one of sigma0"),
+    ({"R": R, "w": W, "E_star": E_STAR, "sigma0": 1e9, "lam": 1.0}, "exactly one of sigma0"),
+    ({"R": -R, "w": W, "E_star": E_STAR, "lam": 1.0}, "^R must be > 0"),
+    ({"R": R, "w": 0.0, "E_star": E_STAR, "lam": 1.0}, "^w must be > 0"),
+    ({"R": R, "w": W, "E_star": np.nan, "lam": 1.0}, "^E_star must be finite"),
+    ({"R": R, "w": W, "E_star": E_STAR, "lam": 1e13}, "lam"),
+    ({"R": [R, R], "w": W, "E_star": E_STAR, "lam": 1.0}, "^R must be a scalar"),
+])
+def test_bad_physical_input(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        mdl.md_contact_radius([0.0], **kwargs)
+
+
+@pytest.mark.parametrize("bad, match", [([np.nan], "^P must be finite"), (["x"], "^P must be a real"),
+                                        ([1e201], "must lie in"), (None, "^P must be a real")])
+def test_bad_load(bad, match):
+    with pytest.raises(ValueError, match=match):
+        mdl.md_solve_load(bad, 1.0)
+    assert mdl.md_solve_load([], 1.0)[0].shape == (0,)

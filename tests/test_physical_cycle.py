@@ -1,0 +1,106 @@
+"""Cycles of a physical contact (asperity.physical_cycle): SI scaling of every result against the
+dimensionless cycle, units, and bad input naming the parameter."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from asperity.cycle import cycle, preload_curve
+from asperity.physical import PhysicalContact, Surface
+
+SURFACE = Surface(2e-9, 1e-6, 1e12, 1e-6)
+
+
+@pytest.fixture(scope="module")
+def contact():
+    return PhysicalContact("Au", SURFACE)
+
+
+def test_scaling_of_a_cycle(contact):
+    sigma, fs, N = SURFACE.sigma_s, contact.force_scale, contact.N
+    pc = contact.cycle(preload="1mN", n=40)
+    dc = cycle(contact.alpha, contact.beta, contact.gamma, nu=contact.nu, h_over_b=contact.h_over_b,
+               preload=1e-3 / fs, n=40)
+    assert pc.preload_N == pytest.approx(1e-3, rel=1e-9)
+    np.testing.assert_allclose(pc.retract.d, dc.retract.d * sigma, rtol=1e-14)
+    np.testing.assert_allclose(pc.retract.P, dc.retract.P * fs, rtol=1e-14)
+    np.testing.assert_allclose(pc.approach.contacts, dc.approach.contacts * N, rtol=1e-14)
+    assert pc.energy_J == pytest.approx(dc.energy * fs * sigma, rel=1e-14)
+    assert pc.energy_J_m2 == pytest.approx(pc.energy_J / SURFACE.area, rel=1e-14)
+    assert pc.loop_energy_J == pytest.approx(dc.loop_energy * fs / N * sigma, rel=1e-14)
+    assert pc.loop_count == pytest.approx(dc.loop_fraction * N, rel=1e-14)
+    assert pc.pull_off.force == pytest.approx(dc.pull_off.force * fs, rel=1e-12)
+    assert pc.pull_off.d == pytest.approx(dc.pull_off.d * sigma, rel=1e-12)
+    assert math.isinf(pc.stiffness_N_m)
+
+
+def test_spring_in_newtons_per_metre(contact):
+    sigma, fs = SURFACE.sigma_s, contact.force_scale
+    k = 2.0e3  # N/m
+    pc = contact.cycle(preload=1e-3, n=200, stiffness="2000N/m")
+    dc = cycle(contact.alpha, contact.beta, contact.gamma, nu=contact.nu, h_over_b=contact.h_over_b,
+               preload=1e-3 / fs, n=200, stiffness=k * sigma / fs)
+    assert pc.stiffness_N_m == pytest.approx(k, rel=1e-14)
+    np.testing.assert_allclose(pc.retract.d_base, dc.retract.d_base * sigma, rtol=1e-12)
+    np.testing.assert_allclose(pc.retract.d_base, pc.retract.d - pc.retract.P / k, rtol=1e-9, atol=1e-18)
+    assert pc.jump_energy_J == pytest.approx(dc.jump_energy * fs * sigma, rel=1e-12)
+    assert len(pc.jumps) == len(dc.jumps)
+    cols = pc.columns()
+    assert list(cols) == ["branch", "d_base_m", "d_m", "P_N", "F_N", "mu", "area_m2", "pressure_Pa", "contacts",
+                          "jump"]
+    json.dumps(pc.to_dict(), allow_nan=False)
+
+
+def test_lengths_and_forces_with_units(contact):
+    a = contact.cycle(d_min="1nm", d_max="20nm", n=20, u_in="-0.01nm")
+    b = contact.cycle(d_min=1e-9, d_max=2e-8, n=20, u_in=-1e-11)
+    assert a.energy_J == b.energy_J and a.d_min_m == pytest.approx(1e-9) and a.u_in_m == pytest.approx(-1e-11)
+    c = contact.cycle(d_min=1e-9, d=["1nm", "2nm", "3nm"])
+    assert len(c.approach) == 3 and c.approach.d[1] == pytest.approx(2e-9)
+
+
+def test_preload_curve(contact):
+    fs, sigma = contact.force_scale, SURFACE.sigma_s
+    P = np.array([1e-4, 1e-3, 1e-2])
+    pc = contact.preload_curve(P)
+    dc = preload_curve(P / fs, contact.alpha, contact.beta, contact.gamma, nu=contact.nu, h_over_b=contact.h_over_b)
+    np.testing.assert_allclose(pc.pull_off_N, dc.pull_off * fs, rtol=1e-12)
+    np.testing.assert_allclose(pc.energy_J, dc.energy * fs * sigma, rtol=1e-12)
+    np.testing.assert_allclose(pc.energy_J_m2, pc.energy_J / SURFACE.area, rtol=1e-14)
+    assert list(pc.columns()) == ["preload_N", "d_min_m", "pull_off_N", "d_pull_off_m", "energy_J", "energy_J_m2",
+                                  "loop_count", "friction_hysteresis_N_m"]
+    assert pc.to_csv().startswith("preload_N,d_min_m,")
+
+
+@pytest.mark.parametrize("kwargs, needle", [
+    ({"preload": "-1mN"}, "preload"),
+    ({"preload": "1nm"}, "preload"),
+    ({"preload": 1e-3, "stiffness": "-0.1N/m"}, "stiffness"),
+    ({"preload": 1e-3, "stiffness": 0.0}, "stiffness"),
+    ({"d_min": "5nm", "d_max": "1nm"}, "d_min"),
+    ({"d_min": "1N"}, "d_min"),
+    ({"preload": "1e12N"}, "preload"),
+])
+def test_bad_input(contact, kwargs, needle):
+    with pytest.raises(ValueError, match=needle):
+        contact.cycle(**kwargs)
+
+
+def test_bad_preload_curve(contact):
+    with pytest.raises(ValueError, match="preload"):
+        contact.preload_curve([1e-3, -1e-3])
+
+
+def test_names_come_from_the_registry(contact):
+    from asperity.quantities import CYCLE_QUANTITIES as Q
+
+    pc = contact.preload_curve([1e-3])
+    dc = preload_curve([1.0], 0.01, 1000.0, 1e-3)
+    assert all(name in Q for name in dc.columns())
+    si = {q.si_name for q in Q.values()}
+    assert set(pc.columns()) <= si
+    c = contact.cycle(preload=1e-3, n=5)
+    scalars = {k for part in ("pull_off", "energy") for k in c.to_dict()[part] if k != "exists"}
+    assert scalars - {"force_N", "d_m"} <= si

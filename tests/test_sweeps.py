@@ -1,0 +1,281 @@
+"""asperity.sweep: equal to a loop over Models cell by cell, on one core and on Dask; faults; stores."""
+
+import os
+import signal
+import sys
+import warnings
+
+import numpy as np
+import pytest
+
+import asperity
+from asperity import sweeps
+from asperity.friction_stress import HurtadoKim
+from asperity.physical import PhysicalContact
+from asperity.surface import Surface
+from asperity.sweeps import store as store_module
+
+xr = pytest.importorskip("xarray")
+
+LOADS = np.geomspace(1e-2, 1e4, 6)
+ALPHAS = np.array([0.003, 0.01, 0.05])
+GAMMAS = np.array([0.0, 1e-4, 1e-3, 1e-2])
+CURVE = ("d", "F", "mu", "area", "pressure", "contacts")
+
+
+def grid(**extra):
+    return dict(alpha=ALPHAS, beta=1000.0, gamma=GAMMAS, P=LOADS, scheduler="serial", **extra)
+
+
+def loop_cell(alpha, beta, gamma, loads, **kw):
+    """What a user would write: one Model per cell, its load curve and pull-off."""
+    m = asperity.Model(alpha, beta, gamma, **kw)
+    c = m.load_curve(loads)
+    return c, m.pull_off()
+
+
+def assert_same(a, b):
+    """Two sweeps equal cell by cell, bit for bit (NaN where NaN), messages too."""
+    assert set(a.data_vars) == set(b.data_vars)
+    for name in a.data_vars:
+        x, y = a[name].values, b[name].values
+        if x.dtype.kind == "f":
+            np.testing.assert_array_equal(x, y, err_msg=name)
+        else:
+            assert (x == y).all(), name
+
+
+@pytest.fixture(scope="module")
+def serial():
+    return asperity.sweep(**grid())
+
+
+def test_sweep_equals_a_loop_over_models(serial):
+    assert serial.mu.dims == ("alpha", "gamma", "P")
+    assert serial.pull_off.dims == ("alpha", "gamma")
+    np.testing.assert_array_equal(serial.alpha.values, ALPHAS)
+    np.testing.assert_array_equal(serial.P.values, LOADS)
+    for i, a in enumerate(ALPHAS):
+        for j, g in enumerate(GAMMAS):
+            c, po = loop_cell(a, 1000.0, g, LOADS)
+            for name in CURVE:
+                np.testing.assert_array_equal(serial[name].values[i, j], getattr(c, name), err_msg=name)
+            assert serial.pull_off.values[i, j] == po.force
+            np.testing.assert_array_equal(serial.pull_off_d.values[i, j], po.d)
+            assert serial.message.values[i, j] == ""
+
+
+def test_units_and_metadata_come_from_the_registry(serial):
+    from asperity.quantities import CURVE_COLUMNS, MODEL_PARAMETERS
+
+    assert serial.mu.attrs["units"] == CURVE_COLUMNS["mu"].unit
+    assert serial.F.attrs["long_name"] == CURVE_COLUMNS["F"].meaning
+    assert serial.alpha.attrs["long_name"] == MODEL_PARAMETERS["alpha"].meaning
+    assert serial.alpha.attrs["log_scale"] == 1 and serial.P.attrs["units"] == "N G b^2"
+    assert serial.attrs["asperity_version"] == asperity.__version__
+    assert serial.attrs["beta"] == 1000.0 and serial.attrs["nu"] == 0.3  # constants, defaults included
+    assert len(serial.attrs["sweep_fingerprint"]) == 64
+
+
+def test_domain_error_becomes_nan_and_a_message():
+    # gamma = 0 cannot carry a tensile load; a too weak adhesion leaves the Maugis range.
+    ds = asperity.sweep(alpha=0.003, beta=1000.0, gamma=[0.0, 1e-3, 1e-30], P=[-1.0, 10.0], scheduler="serial")
+    msg = ds.message.values
+    assert "must be > 0 without adhesion" in msg[0]
+    assert msg[1] == ""
+    assert "lambda" in msg[2] and "outside" in msg[2]
+    assert np.isnan(ds.mu.values[[0, 2]]).all() and np.isnan(ds.pull_off.values[[0, 2]]).all()
+    c, po = loop_cell(0.003, 1000.0, 1e-3, [-1.0, 10.0])
+    np.testing.assert_array_equal(ds.F.values[1], c.F)
+    assert ds.pull_off.values[1] == po.force
+
+
+def test_points_from_a_dict_and_from_csv(tmp_path):
+    pts = {"alpha": [0.003, 0.01, 0.05], "gamma": [1e-3, 0.0, 5e-3], "nu": [0.3, 0.25, 0.2]}
+    ds = asperity.sweep(points=pts, beta=300.0, P=LOADS, scheduler="serial")
+    assert ds.mu.dims == ("point", "P") and list(ds.gamma.dims) == ["point"]
+    for k in range(3):
+        c, po = loop_cell(pts["alpha"][k], 300.0, pts["gamma"][k], LOADS, nu=pts["nu"][k])
+        np.testing.assert_array_equal(ds.mu.values[k], c.mu)
+        assert ds.pull_off.values[k] == po.force
+    path = tmp_path / "sets.csv"
+    path.write_text("alpha,gamma,nu\n" + "\n".join(f"{a},{g},{n}" for a, g, n in zip(*pts.values())) + "\n")
+    assert_same(asperity.sweep(points=str(path), beta=300.0, P=LOADS, scheduler="serial"), ds)
+
+
+def test_separations_and_hurtado_kim_constants():
+    d = np.array([-1.0, 0.0, 2.0])
+    ds = asperity.sweep(alpha=0.01, beta=1000.0, gamma=1e-3, tau_f1=[0.01, 0.02], a1=30.0, d=d,
+                        scheduler="serial")
+    assert ds.P.dims == ("tau_f1", "d")
+    for i, t in enumerate([0.01, 0.02]):
+        m = asperity.Model(0.01, 1000.0, 1e-3, friction=HurtadoKim(tau_f1=t, a1=30.0))
+        c = m.separation_curve(d)
+        np.testing.assert_array_equal(ds.F.values[i], c.F)
+        np.testing.assert_array_equal(ds.P.values[i], c.P)
+        assert ds.pull_off.values[i] == m.pull_off().force
+
+
+def test_physical_sweep_equals_physical_contacts():
+    loads = np.array([1e-4, 1e-3])
+    ds = asperity.sweep(material=["Au", "Si"], sigma_s=[1e-9, 2e-9], R=1e-6, eta=1e12, area=1e-6, P=loads,
+                        scheduler="serial")
+    assert ds.F_N.dims == ("material", "sigma_s", "P_N") and ds.F_N.attrs["units"] == "N"
+    assert list(ds.material.values) == ["Au", "Si"]
+    for i, mat in enumerate(["Au", "Si"]):
+        for j, s in enumerate([1e-9, 2e-9]):
+            pc = PhysicalContact(mat, Surface(s, 1e-6, 1e12, 1e-6))
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always", asperity.AsperityWarning)
+                c = pc.load_curve(loads)
+            # gold yields at these loads: the set is computed and its message holds the library's note
+            notes = [str(w.message) for w in caught]
+            assert str(ds.message.values[i, j]) == "; ".join(f"note: {n}" for n in dict.fromkeys(notes))
+            np.testing.assert_array_equal(ds.F_N.values[i, j], c.F)
+            np.testing.assert_array_equal(ds.d_m.values[i, j], c.d)
+            assert ds.pull_off_N.values[i, j] == pc.pull_off().force and ds.gamma.values[i, j] == pc.gamma
+
+
+@pytest.mark.parametrize("name", ["map.nc", "map.zarr"])
+def test_stores_equal_memory(tmp_path, serial, name):
+    out = tmp_path / name
+    ds = asperity.sweep(**grid(out=str(out), chunk_sets=5))
+    assert os.path.exists(out) and not os.path.exists(str(out) + ".partial")
+    assert_same(ds.load(), serial)
+    assert ds.mu.attrs == serial.mu.attrs and ds.attrs["beta"] == 1000.0  # another chunking: another fingerprint
+    ds.close()
+
+
+def test_chunks_tile_the_grid_once():
+    spec = sweeps.make_spec({"alpha": ALPHAS, "gamma": GAMMAS, "beta": 1.0, "nu": [0.1, 0.2]}, P=[1.0],
+                            chunk_sets=3)
+    seen = np.zeros(spec.shape, dtype=int)
+    for k in range(spec.n_chunks):
+        seen[spec.chunk_region(k)] += 1
+        assert len(spec.chunk_parameters(k)) == seen[spec.chunk_region(k)].size
+    assert (seen == 1).all()
+
+
+def test_a_different_rerun_into_the_same_store_is_refused(tmp_path):
+    out = str(tmp_path / "map.nc")
+    asperity.sweep(**grid(out=out)).close()
+    with pytest.raises(ValueError, match="refusing to mix two grids"):
+        asperity.sweep(alpha=ALPHAS * 2, beta=1000.0, gamma=GAMMAS, P=LOADS, out=out, scheduler="serial",
+                       resume=True)
+    with pytest.raises(ValueError, match="resume=True"):
+        asperity.sweep(**grid(out=out))
+    again = asperity.sweep(**grid(out=out, resume=True))  # finished: reused as it is
+    assert again.attrs["sweep_fingerprint"] and again.mu.shape == (3, 4, 6)
+    again.close()
+
+
+@pytest.mark.parametrize("name", ["map.nc", "map.zarr"])
+def test_interrupted_sweep_resumes_computing_only_missing_chunks(tmp_path, monkeypatch, serial, name):
+    out = str(tmp_path / name)
+    cls = store_module.ZarrStore if name.endswith("zarr") else store_module.NetCDFStore
+    real_write = cls.write
+    written = []
+
+    def interrupting(self, k, result):
+        if len(written) == 2:
+            raise KeyboardInterrupt  # as Ctrl-C after two chunks
+        real_write(self, k, result)
+        written.append(k)
+    monkeypatch.setattr(cls, "write", interrupting)
+    with pytest.raises(KeyboardInterrupt):
+        asperity.sweep(**grid(out=out, chunk_sets=2))
+    assert os.path.exists(out + ".partial") and not os.path.exists(out)
+    monkeypatch.setattr(cls, "write", real_write)
+    with pytest.raises(ValueError, match="interrupted sweep"):
+        asperity.sweep(**grid(out=out, chunk_sets=2))  # no silent restart
+    computed = []
+    real_compute = sweeps.run.compute_chunk
+
+    def counting(kind, sets, *args):
+        computed.append(len(sets))
+        return real_compute(kind, sets, *args)
+    monkeypatch.setattr(sweeps.run, "compute_chunk", counting)
+    ds = asperity.sweep(**grid(out=out, chunk_sets=2, resume=True))
+    spec = sweeps.make_spec({"alpha": ALPHAS, "beta": 1000.0, "gamma": GAMMAS}, P=LOADS, chunk_sets=2)
+    assert len(computed) == spec.n_chunks - 2 and sum(computed) == ALPHAS.size * GAMMAS.size - 4
+    assert_same(ds.load(), serial)
+    ds.close()
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(alpha=0.01, beta=1.0, P=[1.0], kappa=2.0), "unexpected keyword"),
+    (dict(alpha=0.01, beta=1.0, sigma_s=1e-9, P=[1.0]), "not both"),
+    (dict(alpha=0.01, beta=1.0), "give loads P or separations d"),
+    (dict(alpha=0.01, beta=1.0, P=[1.0], d=[0.0]), "give loads P or separations d"),
+    (dict(alpha=[0.01, -1.0], beta=1.0, P=[1.0]), "alpha must satisfy 0 < alpha"),
+    (dict(alpha=0.01, P=[1.0]), "needs beta"),
+    (dict(alpha=0.01, beta=1.0, P=[[1.0]]), "P must be 1-D"),
+    (dict(alpha=0.01, beta=1.0, P=[1.0], chunk_sets=0), "chunk_sets"),
+    (dict(alpha=0.01, beta=1.0, P=[1.0], scheduler=3), "scheduler must be"),
+    (dict(points={"alpha": [0.01, 0.02], "beta": [1.0]}, P=[1.0]), "same length"),
+    (dict(points={"alpha": [0.01]}, alpha=0.01, beta=1.0, P=[1.0]), "both in points"),
+    (dict(material=3, sigma_s=1e-9, R=1e-6, eta=1e12, area=1e-6, P=[1.0]), "material must be"),
+])
+def test_bad_arguments_are_refused(kwargs, match):
+    with pytest.raises((ValueError, TypeError), match=match):
+        asperity.sweep(**kwargs)
+
+
+def test_bad_points_file(tmp_path):
+    path = tmp_path / "p.csv"
+    path.write_text("alpha,beta\n0.01,abc\n")
+    with pytest.raises(ValueError, match="is not a number"):
+        asperity.sweep(points=str(path), P=[1.0], scheduler="serial")
+    with pytest.raises(ValueError, match="cannot read"):
+        asperity.sweep(points=str(tmp_path / "none.csv"), P=[1.0], scheduler="serial")
+
+
+def test_without_xarray_the_hint_names_the_extra(monkeypatch):
+    monkeypatch.setitem(sys.modules, "xarray", None)
+    with pytest.raises(ImportError, match=r"pip install 'asperity\[sweep\]'"):
+        asperity.sweep(alpha=0.01, beta=1.0, P=[1.0])
+
+
+def test_progress_bar_with_eta(capsys):
+    asperity.sweep(alpha=ALPHAS, beta=1000.0, gamma=1e-3, P=LOADS, scheduler="serial", progress=True,
+                   chunk_sets=1)
+    err = capsys.readouterr().err
+    assert "asperity sweep" in err and "3/3" in err and "<" in err  # tqdm's elapsed<remaining
+
+
+# -- Dask ----------------------------------------------------------------------------------------
+distributed = pytest.importorskip("distributed")
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    import logging
+
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=":0", silence_logs=logging.CRITICAL) as cl, \
+            distributed.Client(cl) as client:
+        yield client
+
+
+def test_two_workers_equal_serial_cell_by_cell(cluster, serial, tmp_path):
+    ds = asperity.sweep(**dict(grid(chunk_sets=2), scheduler=cluster))
+    assert_same(ds, serial)
+    zarr = asperity.sweep(**dict(grid(chunk_sets=3, out=str(tmp_path / "m.zarr")), scheduler=cluster))
+    assert_same(zarr.load(), serial)
+
+
+def test_a_killed_worker_does_not_lose_the_sweep(cluster, serial, monkeypatch):
+    pids = list(cluster.run(os.getpid).values())
+    real_write = store_module.MemoryStore.write
+    killed = []
+
+    def kill_after_first(self, k, result):
+        real_write(self, k, result)
+        if not killed:  # mid-sweep: tasks are in flight on both workers
+            os.kill(pids[0], signal.SIGKILL)
+            killed.append(pids[0])
+    monkeypatch.setattr(store_module.MemoryStore, "write", kill_after_first)
+    ds = asperity.sweep(**dict(grid(chunk_sets=1), scheduler=cluster))
+    assert killed
+    assert_same(ds, serial)
+    cluster.wait_for_workers(2, timeout=60)  # the nanny restarts it for the next test

@@ -1,0 +1,121 @@
+"""The boundary-element setup against closed forms (Hertz, Westergaard), grid refinement, bad input."""
+
+import math
+
+import numpy as np
+import pytest
+
+pytest.importorskip("ContactMechanics")
+from SurfaceTopography import Topography, UniformLineScan  # noqa: E402
+
+from asperity.validation import MIN_GRID, bem_contact, subsample  # noqa: E402
+from asperity.validation.surfaces import synthetic_surface  # noqa: E402
+
+E_STAR = 1e11
+
+
+def sphere(n, size, radius):
+    x = (np.arange(n) + 0.5) * size / n - size / 2
+    X, Y = np.meshgrid(x, x, indexing="ij")
+    return Topography(-(X**2 + Y**2) / (2 * radius), (size, size), periodic=False, unit="m")
+
+
+def test_hertz_sphere_radius_and_penetration():
+    # Free boundaries: a rigid sphere on a half-space, Hertz: a = (3PR/4E*)^(1/3), delta = a^2/R.
+    R, size, n = 2e-6, 1e-6, 96
+    topo = sphere(n, size, R)
+    P = np.array([2e-4, 5e-4])  # contact radii of 14 and 19 pixels
+    c = bem_contact(topo, P, E_star=E_STAR, periodic=False)
+    a_hertz = (3 * P * R / (4 * E_STAR)) ** (1 / 3)
+    np.testing.assert_allclose(np.sqrt(c.area / math.pi), a_hertz, rtol=0.02)
+    h = np.asarray(topo.detrend("height").heights())
+    delta = h.max() - c.separation  # the flat's approach past the top of the sphere
+    np.testing.assert_allclose(delta, a_hertz**2 / R, rtol=0.02)
+    assert list(c.spots) == [1, 1] and c.periodic is False
+    assert np.all(np.diff(c.area) > 0)
+
+
+@pytest.mark.parametrize("p_ratio", [0.05, 0.3, 0.8])
+def test_westergaard_wavy_surface(p_ratio):
+    # Periodic: h = D cos(2 pi x / lam); full contact at p* = pi E* D / lam; below, the contact half-width a
+    # obeys p/p* = sin^2(pi a / lam) (Westergaard 1939; Johnson 1985, 13.2), so the area fraction is
+    # (2/pi) arcsin(sqrt(p/p*)).
+    n, lam, D = 256, 1e-6, 5e-9
+    x = np.arange(n) * lam / n
+    h = D * np.cos(2 * np.pi * x / lam)[:, None] * np.ones((1, 16))
+    topo = Topography(h, (lam, lam * 16 / n), periodic=True, unit="m")
+    p_star = math.pi * E_STAR * D / lam
+    c = bem_contact(topo, [p_ratio * p_star * lam * lam * 16 / n], E_star=E_STAR)
+    expected = 2 / math.pi * math.asin(math.sqrt(p_ratio))
+    assert c.area_fraction[0] == pytest.approx(expected, abs=2.0 / n)
+    assert c.spots[0] == 1 and math.isnan(c.separation[0])
+
+
+def test_grid_refinement_lowers_pixel_area():
+    # The same band-limited surface on two grids: pixel-counted areas fall with refinement and converge.
+    coarse, fine = (synthetic_surface("gaussian", 2e-6, n, short_cutoff=2e-6 / 8, seed=3) for n in (32, 64))
+    P = 4e-12 * 1.0e11 * np.array([1e-3, 4e-3])
+    a, b = (bem_contact(t, P, E_star=E_STAR).area for t in (coarse, fine))
+    assert np.all(a >= b)
+    np.testing.assert_allclose(a, b, rtol=0.12)
+
+
+def test_warm_start_matches_cold_start_and_order():
+    topo = synthetic_surface("self-affine", 2e-6, 32, short_cutoff=2e-6 / 8, seed=1)
+    P = 4e-12 * 1.0e11 * np.array([4e-3, 1e-3, 2e-3])
+    warm = bem_contact(topo, P, E_star=E_STAR)
+    np.testing.assert_array_equal(warm.P, P)
+    for i, load in enumerate(P):
+        cold = bem_contact(topo, [load], E_star=E_STAR)
+        assert cold.area[0] == pytest.approx(warm.area[i], rel=0.02)
+        assert cold.mean_gap[0] == pytest.approx(warm.mean_gap[i], rel=1e-3)
+
+
+def test_subsample_block_average():
+    h = np.arange(64 * 48, dtype=float).reshape(64, 48)
+    topo = Topography(h, (6.4e-6, 4.8e-6), periodic=True, unit="m")
+    assert subsample(topo, None) is topo and subsample(topo, 64) is topo
+    small = subsample(topo, 32)
+    np.testing.assert_allclose(small.heights(), h.reshape(32, 2, 24, 2).mean(axis=(1, 3)))
+    assert small.physical_sizes == pytest.approx((6.4e-6, 4.8e-6)) and small.is_periodic
+    odd = subsample(Topography(h[:62], (6.2e-6, 4.8e-6), periodic=True, unit="m"), 30)
+    assert odd.nb_grid_pts == (20, 16) and not odd.is_periodic  # 2 rows dropped: no longer periodic
+    assert odd.physical_sizes == pytest.approx((6.0e-6, 4.8e-6))
+
+
+@pytest.mark.parametrize("grid", [8, MIN_GRID - 1, 2.5, True, "64"])
+def test_bad_grid(grid):
+    topo = synthetic_surface("gaussian", 2e-6, 32, short_cutoff=2e-6 / 8)
+    with pytest.raises(ValueError, match="grid"):
+        bem_contact(topo, [1e-3], E_star=E_STAR, grid=grid)
+
+
+@pytest.mark.parametrize("P", [[0.0], [-1e-3], [math.nan], [math.inf], [], np.ones(1001), "x", [True]])
+def test_bad_loads(P):
+    topo = synthetic_surface("gaussian", 2e-6, 32, short_cutoff=2e-6 / 8)
+    with pytest.raises((ValueError, TypeError), match="load"):
+        bem_contact(topo, P, E_star=E_STAR)
+
+
+def test_bad_surfaces_and_options():
+    topo = synthetic_surface("gaussian", 2e-6, 32, short_cutoff=2e-6 / 8)
+    with pytest.raises(TypeError, match="SurfaceTopography"):
+        bem_contact(np.zeros((32, 32)), [1e-3], E_star=E_STAR)
+    line = UniformLineScan(np.sin(np.arange(64.0)), 1e-6, periodic=True, unit="m")
+    with pytest.raises(ValueError, match="2-d map"):
+        bem_contact(line, [1e-3], E_star=E_STAR)
+    tiny = Topography(np.random.default_rng(0).normal(size=(12, 12)) * 1e-9, (1e-6, 1e-6), unit="m")
+    with pytest.raises(ValueError, match="too small"):
+        bem_contact(tiny, [1e-3], E_star=E_STAR)
+    for kwargs in ({"E_star": -1.0}, {"E_star": E_STAR, "tolerance": 0.5}, {"E_star": E_STAR, "maxiter": 0}):
+        with pytest.raises(ValueError):
+            bem_contact(topo, [1e-3], **kwargs)
+    with pytest.raises(ValueError, match="did not converge"):
+        bem_contact(topo, [1e-3], E_star=E_STAR, maxiter=1)
+
+
+def test_table_of_a_curve():
+    pd = pytest.importorskip("pandas")
+    c = bem_contact(synthetic_surface("gaussian", 2e-6, 32, short_cutoff=2e-6 / 8), [1e-3, 2e-3], E_star=E_STAR)
+    assert c.to_csv().splitlines()[0] == ",".join(c.columns())
+    assert isinstance(c.to_dataframe(), pd.DataFrame) and len(c) == 2
