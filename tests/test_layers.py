@@ -32,7 +32,7 @@ LAYERS = [
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle", "interaction"}),
-    ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity"}),
+    ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity", "icha", "persson"}),
     ("applications", {"fit", "sweeps", "validation"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]
