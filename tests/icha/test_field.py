@@ -159,3 +159,12 @@ def test_bad_input(args, message):
         boussinesq_rectangle_mean(2.0, 0.5, 1.0, 1.0)
     with pytest.raises(ValueError, match="size_x"):
         PeriodicKernel(0.0, 1.0)
+
+
+def test_excess_derivative_in_the_radius():
+    r = np.array([0.5, 0.9, 1.1, 2.0, 9.0, 11.0, 50.0])
+    a, h = 1.0, 1e-6
+    numeric = (FreeKernel.spot_excess(r, a + h) - FreeKernel.spot_excess(r, a - h)) / (2 * h)
+    np.testing.assert_allclose(FreeKernel.spot_excess_da(r, a), numeric, rtol=1e-6)
+    assert PeriodicKernel.spot_excess_da is FreeKernel.spot_excess_da or \
+        np.allclose(PeriodicKernel.spot_excess_da(r, a), numeric, rtol=1e-6)

@@ -147,6 +147,26 @@ def _excess(r, a):
     return out
 
 
+def _excess_da(r, a):
+    """Derivative of :func:`_excess` with respect to the contact radius a [1/m^2] (0 for infinite r)."""
+    r, a = np.broadcast_arrays(np.asarray(r, float), np.asarray(a, float))
+    s = a / r
+    s2 = s * s
+    c1, c2, c3, c4 = _EXCESS_SERIES
+    out = np.asarray(s * (2 * c1 + s2 * (4 * c2 + s2 * (6 * c3 + s2 * 8 * c4))) / (r * r), float).reshape(r.shape)
+    near = s2 >= 0.01
+    if near.any():
+        rn, an = r[near], a[near]
+        inside = rn <= an
+        val = np.empty(rn.shape)
+        ri, ai = rn[inside], an[inside]
+        val[inside] = -3 * math.pi / (4 * ai**2) + 9 * math.pi * ri**2 / (8 * ai**4)
+        ro, ao = rn[~inside], an[~inside]
+        val[~inside] = -3 / ao * _unit_field(ro, ao) + 3 / ao**2 * np.arcsin(ao / ro)
+        out[near] = val
+    return out
+
+
 def hertz_excess(r, a):
     r"""Hertzian field minus Boussinesq's, in units of :math:`F/\pi E^*`: :math:`\pi E^* u/F - 1/r`.
 
@@ -282,6 +302,11 @@ class FreeKernel:
         """:func:`hertz_excess` without input checks (the solver's inner loop), r > 0."""
         return _excess(r, a)
 
+    @staticmethod
+    def spot_excess_da(r, a):
+        """Derivative of :meth:`spot_excess` with respect to ``a`` [1/m^2] (the solver's Jacobian)."""
+        return _excess_da(r, a)
+
 
 class PeriodicKernel:
     r"""Periodic point-force Green's function of a rectangular cell, split by Ewald.
@@ -357,6 +382,7 @@ class PeriodicKernel:
         return r, values + short
 
     spot_excess = staticmethod(FreeKernel.spot_excess)
+    spot_excess_da = staticmethod(FreeKernel.spot_excess_da)
 
     def point_row(self, x0, y0, x, y):
         r"""Nearest-image distances and :math:`\pi E^* G` [1/m] from ``x0, y0`` to the points ``x, y`` (not it)."""

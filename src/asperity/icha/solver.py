@@ -196,39 +196,54 @@ class IchaState:
         scale = float(np.ptp(self.z)) or float(np.max(np.abs(self.z))) or 1.0
         delta = np.where(self.F > 0, np.cbrt((self.F / k) ** 2), 0.0)
         d = self.d
-        for it in range(MAX_ITERATIONS):
+        it = 0
+        while it < MAX_ITERATIONS:
             act = index[delta > 0]
-            a = np.sqrt(self.R[act] * delta[act])
-            C = self.compliance(index, act, a)                        # n x m
-            F = k[act] * delta[act] ** 1.5
-            u = C @ F
-            gap = self.z - d - u                                      # interference of every asperity
-            res = np.append(delta[act] - gap[act], F.sum() - P)
-            grow = (delta <= 0) & (gap > tol * scale)
-            if not grow.any() and np.max(np.abs(res[:-1])) <= tol * scale and abs(res[-1]) <= tol * P:
-                self.F = np.zeros(n)
-                self.F[act] = F
-                self.d, self.iterations = d, self.iterations + it
-                return
-            if grow.any():                                            # new contacts: start at their gap
-                delta[grow] = gap[grow]
-                continue
-            m = act.size
-            dF = 1.5 * k[act] * np.sqrt(delta[act])
-            J = np.zeros((m + 1, m + 1))
-            J[:m, :m] = C[act] * dF[None, :]
-            J[np.arange(m), np.arange(m)] += 1.0
-            J[:m, m] = 1.0
-            J[m, :m] = dF
-            step = np.linalg.solve(J, -res)
-            delta[act] += step[:m]
-            d += step[m]
-            delta[act] = np.where(delta[act] > 0, delta[act], 0.0)   # released contacts leave the set
-            if not np.any(delta > 0):                                 # all released: restart from Hertz
+            if act.size == 0:                                         # all released: restart from Hertz
                 self.F = np.zeros(n)
                 self.first_guess(P)
                 delta = np.where(self.F > 0, np.cbrt((self.F / k) ** 2), 0.0)
                 d = self.d
+                continue
+            while it < MAX_ITERATIONS:                                # Newton on the contacts
+                it += 1
+                a = np.sqrt(self.R[act] * delta[act])
+                C = self.compliance(act, act, a)                      # m x m
+                F = k[act] * delta[act] ** 1.5
+                res = np.append(delta[act] - (self.z[act] - d - C @ F), F.sum() - P)
+                if np.max(np.abs(res[:-1])) <= tol * scale and abs(res[-1]) <= tol * P:
+                    break
+                m = act.size
+                dF = 1.5 * k[act] * np.sqrt(delta[act])
+                J = np.empty((m + 1, m + 1))
+                J[:m, :m] = C * dF[None, :]
+                if self.interaction:                                  # the field's dependence on a_j
+                    ix = np.ix_(act, act)
+                    dC = self.kernel.spot_excess_da(self.distance[ix], a[None, :]) / (math.pi * self.E_star)
+                    J[:m, :m] += dC * (F * a / (2 * delta[act]))[None, :]
+                J[np.arange(m), np.arange(m)] += 1.0
+                J[:m, m] = 1.0
+                J[m, :m] = dF
+                J[m, m] = 0.0
+                step = np.linalg.solve(J, -res)
+                delta[act] += step[:m]
+                d += step[m]
+                if np.any(delta[act] <= 0):                           # released contacts leave the set
+                    delta[act] = np.where(delta[act] > 0, delta[act], 0.0)
+                    break
+            else:
+                break
+            if np.any(delta[act] <= 0):
+                continue
+            rest = index[delta <= 0]                                  # does any other asperity touch?
+            gap = self.z[rest] - d - self.compliance(rest, act, a) @ F
+            grow = gap > tol * scale
+            if not grow.any():
+                self.F = np.zeros(n)
+                self.F[act] = F
+                self.d, self.iterations = d, self.iterations + it
+                return
+            delta[rest[grow]] = gap[grow]                             # new contacts start at their gap
         raise ValueError(f"the asperity model did not converge at P = {P:.6g} N within {MAX_ITERATIONS} "
                          "iterations")
 
