@@ -31,7 +31,7 @@ from scipy import optimize
 __all__ = ["merge_spots", "IchaState", "MAX_ITERATIONS"]
 
 #: Most Newton iterations per solve of one load step (between merges).
-MAX_ITERATIONS = 200
+MAX_ITERATIONS = 1000
 #: Most rounds of merging at one load.
 MAX_MERGE_ROUNDS = 10000
 
@@ -226,11 +226,17 @@ class IchaState:
                 J[m, :m] = dF
                 J[m, m] = 0.0
                 step = np.linalg.solve(J, -res)
-                delta[act] += step[:m]
-                d += step[m]
-                if np.any(delta[act] <= 0):                           # released contacts leave the set
+                down = step[:m] < 0                                   # ratio test: stop where a contact opens
+                ratio = np.min(-delta[act][down] / step[:m][down]) if down.any() else np.inf
+                if ratio < 1.0:
+                    opening = act[down][np.argmin(-delta[act][down] / step[:m][down])]
+                    delta[act] += ratio * step[:m]
+                    d += ratio * step[m]
+                    delta[opening] = 0.0                              # it leaves the set; the rest go on
                     delta[act] = np.where(delta[act] > 0, delta[act], 0.0)
                     break
+                delta[act] += step[:m]
+                d += step[m]
             else:
                 break
             if np.any(delta[act] <= 0):
