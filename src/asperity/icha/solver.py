@@ -184,12 +184,19 @@ class IchaState:
         if not np.any(self.F > 0):
             self.first_guess(P)
         for _ in range(MAX_MERGE_ROUNDS):
-            self._equilibrium(P, tol)
-            if not (self.coalescence and self._merge_overlapping()):
+            settled = self._equilibrium(P, tol)
+            merged = self.coalescence and self._merge_overlapping()
+            if settled and not merged:
                 return
         raise ValueError(f"the asperity model did not settle its coalescences at P = {P:.6g} N")
 
-    def _equilibrium(self, P, tol):
+    def _equilibrium(self, P, tol) -> bool:
+        """Solve the load step for the current asperities.
+
+        Returns True at equilibrium; False if it stopped early because asperities coming
+        into contact overlap a contact spot (they are left in contact, provisionally, for
+        :meth:`_merge_overlapping`), with coalescence on.
+        """
         k = 4 / 3 * self.E_star * np.sqrt(self.R)
         n = self.z.size
         index = np.arange(n)
@@ -244,14 +251,21 @@ class IchaState:
             rest = index[delta <= 0]                                  # does any other asperity touch?
             gap = self.z[rest] - d - self.compliance(rest, act, a) @ F
             grow = gap > tol * scale
-            if not grow.any():
+            if not grow.any() or (self.coalescence and self._touching(rest[grow], gap[grow], act, a)):
                 self.F = np.zeros(n)
                 self.F[act] = F
+                if grow.any():                                        # provisional: they merge next
+                    self.F[rest[grow]] = k[rest[grow]] * gap[grow] ** 1.5
                 self.d, self.iterations = d, self.iterations + it
-                return
+                return not grow.any()
             delta[rest[grow]] = gap[grow]                             # new contacts start at their gap
         raise ValueError(f"the asperity model did not converge at P = {P:.6g} N within {MAX_ITERATIONS} "
                          "iterations")
+
+    def _touching(self, new, gap, act, a) -> bool:
+        """Whether an asperity coming into contact (interference ``gap``) overlaps a contact spot."""
+        a_new = np.sqrt(self.R[new] * gap)
+        return bool(np.any(self.distance[np.ix_(new, act)] < a_new[:, None] + a[None, :]))
 
     def _merge_overlapping(self) -> bool:
         """Merge every disjoint pair of overlapping contact circles; True if any merged."""
