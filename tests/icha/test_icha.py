@@ -161,6 +161,19 @@ def test_two_caps_coalesce_into_one_hertz_spot():
     assert list(apart.spots) == [2, 2] and apart.area[0] == pytest.approx(c.area[0], rel=1e-12)
 
 
+def test_a_summit_reaching_a_spot_coalesces_at_once():
+    # A small summit 20 nm from a blunt cap, 0.05 nm above the cap's sphere there: it comes
+    # into contact inside the growing spot and joins it (it never counts as a spot of its own).
+    s = MapSummits(x=np.array([0.0, 2e-8]), y=np.zeros(2), z=np.array([2e-9, 1.85e-9]), R=np.array([1e-6, 1e-7]),
+                   size=(1e-6, 1e-6), periodic=False)
+    P = np.geomspace(1e-7, 1e-4, 6)
+    c = icha_curve(s, P, E_star=E)
+    assert list(c.spots) == [1] * 6 and list(c.merges) == [0, 0, 1, 1, 1, 1]
+    np.testing.assert_allclose(c.force_sum, P, rtol=1e-12)
+    apart = icha_curve(s, P, E_star=E, coalescence=False)
+    assert list(apart.spots) == [1, 1, 2, 2, 2, 2]
+
+
 def test_coalescence_with_interaction_on_a_rough_map():
     h, px = rough_map(seed=8)
     s = map_summits(h, px, periodic=True)

@@ -9,8 +9,12 @@ every asperity :math:`i` (height :math:`z_i`, radius :math:`R_i`) is compressed 
 
 with :math:`u_j` the Hertzian field of contact :math:`j` (:mod:`asperity.icha.field`), and
 :math:`\sum_i F_i = P`.  The contacts are found by an active-set Newton method on
-:math:`(\delta_i, d)`, the field's dependence on the contact radii being updated at each
-step; the previous load's state is the starting point.
+:math:`(\delta_i, d)` with the exact Jacobian (the field's dependence on the contact radii
+included), a ratio test where a contact opens and backtracking where a full step does not
+reduce the residual; the previous load's state is the starting point.  Without
+coalescence, an asperity inside another's spot can be pushed in and out of contact for
+ever by the overlapping Hertz fields: after :data:`MAX_ENTRIES` entries in one solve it
+stays out.
 
 **Coalescence.**  When the contact circles of two spots overlap,
 :math:`|\mathbf r_i - \mathbf r_j| < a_i + a_j`, they become one equivalent Hertzian spot
@@ -32,6 +36,8 @@ __all__ = ["merge_spots", "IchaState", "MAX_ITERATIONS"]
 
 #: Most Newton iterations per solve of one load step (between merges).
 MAX_ITERATIONS = 1000
+#: Most times an asperity may come into contact during one solve (see :meth:`IchaState._equilibrium`).
+MAX_ENTRIES = 5
 #: Most rounds of merging at one load.
 MAX_MERGE_ROUNDS = 10000
 
@@ -204,6 +210,7 @@ class IchaState:
         delta = np.where(self.F > 0, np.cbrt((self.F / k) ** 2), 0.0)
         d = self.d
         it = 0
+        entries = np.zeros(n, dtype=int)                              # times each asperity entered contact
         while it < MAX_ITERATIONS:
             act = index[delta > 0]
             if act.size == 0:                                         # all released: restart from Hertz
@@ -214,10 +221,8 @@ class IchaState:
                 continue
             while it < MAX_ITERATIONS:                                # Newton on the contacts
                 it += 1
-                a = np.sqrt(self.R[act] * delta[act])
-                C = self.compliance(act, act, a)                      # m x m
-                F = k[act] * delta[act] ** 1.5
-                res = np.append(delta[act] - (self.z[act] - d - C @ F), F.sum() - P)
+                a, C, F, res = self._residual(act, k, delta, d, P)
+                norm = self._norm(res, scale, P)
                 if np.max(np.abs(res[:-1])) <= tol * scale and abs(res[-1]) <= tol * P:
                     break
                 m = act.size
@@ -242,15 +247,25 @@ class IchaState:
                     delta[opening] = 0.0                              # it leaves the set; the rest go on
                     delta[act] = np.where(delta[act] > 0, delta[act], 0.0)
                     break
-                delta[act] += step[:m]
-                d += step[m]
+                alpha = 1.0                                           # backtrack until the residual falls
+                for _ in range(30):
+                    trial = delta.copy()
+                    trial[act] += alpha * step[:m]
+                    if self._norm(self._residual(act, k, trial, d + alpha * step[m], P)[3], scale, P) \
+                            <= (1 - 1e-4 * alpha) * norm:
+                        break
+                    alpha /= 2
+                delta[act] += alpha * step[:m]
+                d += alpha * step[m]
             else:
                 break
             if np.any(delta[act] <= 0):
                 continue
             rest = index[delta <= 0]                                  # does any other asperity touch?
             gap = self.z[rest] - d - self.compliance(rest, act, a) @ F
-            grow = gap > tol * scale
+            # Without coalescence an asperity inside another's spot can be pushed in and out
+            # for ever (overlapping Hertz fields): after MAX_ENTRIES entries it stays out.
+            grow = (gap > tol * scale) & (entries[rest] < MAX_ENTRIES)
             if not grow.any() or (self.coalescence and self._touching(rest[grow], gap[grow], act, a)):
                 self.F = np.zeros(n)
                 self.F[act] = F
@@ -259,8 +274,21 @@ class IchaState:
                 self.d, self.iterations = d, self.iterations + it
                 return not grow.any()
             delta[rest[grow]] = gap[grow]                             # new contacts start at their gap
+            entries[rest[grow]] += 1
         raise ValueError(f"the asperity model did not converge at P = {P:.6g} N within {MAX_ITERATIONS} "
                          "iterations")
+
+    def _residual(self, act, k, delta, d, P):
+        """Contact radii, influence matrix, forces and residuals of the contacts ``act``."""
+        a = np.sqrt(self.R[act] * delta[act])
+        C = self.compliance(act, act, a)
+        F = k[act] * delta[act] ** 1.5
+        return a, C, F, np.append(delta[act] - (self.z[act] - d - C @ F), F.sum() - P)
+
+    @staticmethod
+    def _norm(res, scale, P) -> float:
+        """Size of the residuals: interferences over the height range, force over the load."""
+        return math.hypot(float(np.linalg.norm(res[:-1])) / scale, float(res[-1]) / P)
 
     def _touching(self, new, gap, act, a) -> bool:
         """Whether an asperity coming into contact (interference ``gap``) overlaps a contact spot."""
