@@ -16,7 +16,8 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
                    "asperity.heights", "asperity.jackson_green", "asperity.jackson_green_fits",
-                   "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity"]
+                   "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity", "asperity.persson",
+                   "asperity.icha.field", "asperity.icha.solver", "asperity.icha.summits", "asperity.icha.contact"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -37,6 +38,9 @@ FULL_DOCS = {
     "asperity.nix_gao": ["ng_hardness", "ng_scaled_interference", "ng_interference", "ng_critical_interference"],
     "asperity.elastic_plastic": ["critical_penetration", "plastic_fraction", "make_law"],
     "asperity.plasticity": ["plasticity_index", "plastic_share"],
+    "asperity.persson": ["persson_area_fraction", "bgt_area_fraction", "rms_slope"],
+    "asperity.icha": ["icha_contact", "icha_curve", "map_summits", "merge_spots", "hertz_displacement", "hertz_excess",
+                      "boussinesq_rectangle_mean"],
 }
 
 

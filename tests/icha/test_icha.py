@@ -231,3 +231,7 @@ def test_bad_maps(monkeypatch):
         icha_curve(map_summits(h, px, periodic=True), [1e-4], E_star=E)
     with pytest.raises(TypeError, match="SurfaceTopography"):
         icha_contact(h, [1e-4], E_star=E)
+    with pytest.raises(ValueError, match="a1"):
+        merge_spots(1.0, 0.0, 1.0, 1e-9, E)
+    with pytest.raises(ValueError, match="E_star"):
+        merge_spots(1.0, 1e-9, 1.0, 1e-9, -E)

@@ -32,6 +32,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize
 
+from .._validation import check_positive, check_scalar_positive
+
 __all__ = ["merge_spots", "IchaState", "MAX_ITERATIONS"]
 
 #: Most Newton iterations per solve of one load step (between merges).
@@ -68,6 +70,11 @@ def merge_spots(F1, a1, F2, a2, E_star):
         Force [N], contact radius [m], radius of curvature [m] and interference [m] of
         the equivalent spot.
 
+    Raises
+    ------
+    ValueError
+        For non-finite or non-positive forces, radii or modulus.
+
     Examples
     --------
     >>> F, a, R, delta = merge_spots(1.0, 1e-8, 1.0, 1e-8, 1e11)   # two equal spots: R grows by sqrt(2)
@@ -78,7 +85,8 @@ def merge_spots(F1, a1, F2, a2, E_star):
     ----------
     L. Afferrante, G. Carbone, G. Demelio, Wear 278-279 (2012) 28-33; Johnson (1985), §4.2.
     """
-    F1, a1, F2, a2 = (np.asarray(v, float) for v in (F1, a1, F2, a2))
+    F1, a1, F2, a2 = (check_positive(v, n) for v, n in ((F1, "F1"), (a1, "a1"), (F2, "F2"), (a2, "a2")))
+    E_star = check_scalar_positive(E_star, "E_star", "Pa")
     F = F1 + F2
     a = np.sqrt(a1 * a1 + a2 * a2)
     R = 4 * E_star * a**3 / (3 * F)
