@@ -23,8 +23,9 @@ from .summits import MapSummits, map_summits
 
 __all__ = ["IchaCurve", "icha_contact", "icha_curve", "MAX_SUMMITS", "MAX_LOADS"]
 
-#: Most summits on one map (the influence matrix is summits x contacts).
-MAX_SUMMITS = 20000
+#: Most summits on one map: the model keeps two summits x summits matrices (distances and
+#: point-force fields, 8 N^2 bytes each: 256 MB at the limit).
+MAX_SUMMITS = 4000
 #: Most loads in one run.
 MAX_LOADS = 1000
 
@@ -176,7 +177,7 @@ def icha_curve(summits, P, *, E_star, interaction=True, coalescence=True) -> Ich
             raise TypeError(f"{name} must be True or False, got {flag!r}")
     if len(summits) > MAX_SUMMITS:
         raise ValueError(f"the map has {len(summits)} summits, more than {MAX_SUMMITS}; average it down "
-                         "(grid=...) first")
+                         "(grid=..., --grid on the command line) first")
     P = _check_loads(P)
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
     start = time.perf_counter()
