@@ -1,7 +1,7 @@
 """The models against boundary elements on synthetic surfaces (the tables of docs/validation.md).
 
 Run on one core: ``OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/bench_validation.py``
-(about 30 minutes; ``--quick`` for a smaller run).  For each surface type (self-affine with
+(about 40 minutes on a shared two-core machine; ``--quick`` for a smaller run).  For each surface type (self-affine with
 Hurst 0.5, 0.8 and 0.9; Gaussian-correlated), several seeds and two grids of the *same*
 band-limited surface (``asperity.validation.surfaces``), it solves the boundary-element
 contact at loads spanning about 0.5 % to 30 % real area and puts the models beside it:
