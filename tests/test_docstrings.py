@@ -20,7 +20,9 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.cycle_run", "asperity.cycle_integrals", "asperity.instrument", "asperity.physical_cycle",
                    "asperity.sweeps.run",
                    "asperity.maugis_dugdale_load", "asperity.cos", "asperity.amontons",
-                   "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare"]
+                   "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare",
+                   "asperity.persson", "asperity.icha.field", "asperity.icha.solver", "asperity.icha.summits",
+                   "asperity.icha.contact"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -55,6 +57,9 @@ FULL_DOCS = {
     "asperity.physical_cycle": ["physical_cycle", "physical_preload_curve"],
     "asperity.instrument": ["base_displacement"],
     "asperity.sweeps.run": ["sweep"],
+    "asperity.persson": ["persson_area_fraction", "bgt_area_fraction", "rms_slope"],
+    "asperity.icha": ["icha_contact", "icha_curve", "map_summits", "merge_spots", "hertz_displacement", "hertz_excess",
+                      "boussinesq_rectangle_mean"],
 }
 
 

@@ -59,13 +59,15 @@ def test_validate_surface_example(tmp_path, capsys):
     assert (tmp_path / "validation.png").read_bytes()[:4] == b"\x89PNG"
     assert (tmp_path / "validation.csv").read_text().splitlines()[0].startswith("P_N,")
     out = capsys.readouterr().out
-    assert "largest |A_GW/A_BEM - 1|" in out and "cost:" in out
+    assert "largest |A_model/A_BEM - 1|" in out and "cost:" in out and "icha" in out
     # The same numbers straight from the library
     topo = synthetic_surface("self-affine", 4e-6, 48, short_cutoff=4e-6 * 4 / 48, hurst=0.8, seed=0)
     again = validate_surface(topo, result.columns()["P_N"], material="Au")
     np.testing.assert_allclose(again.columns()["area_bem_m2"], result.columns()["area_bem_m2"], rtol=1e-12)
     np.testing.assert_allclose(again.columns()["area_spectral_m2"], result.columns()["area_spectral_m2"],
                                rtol=1e-12)
+    np.testing.assert_allclose(validate_surface(topo, result.columns()["P_N"], material="Au", models="icha")
+                               .columns()["area_icha_m2"], result.columns()["area_icha_m2"], rtol=1e-12)
 
 def test_plasticity_example(tmp_path, capsys):
     from asperity import PlasticityWarning

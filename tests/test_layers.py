@@ -34,7 +34,8 @@ LAYERS = [
     ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search", "cycle_run",
                 "cycle_result", "instrument", "interaction"}),
-    ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity", "physical_cycle"}),
+    ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity", "physical_cycle", "icha",
+                  "persson"}),
     ("applications", {"fit", "sweeps", "validation", "cycle_plot"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]
