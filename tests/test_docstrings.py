@@ -15,7 +15,10 @@ import asperity
 DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
-                   "asperity.heights"]
+                   "asperity.heights.base", "asperity.heights.gaussian", "asperity.heights.exponential",
+                   "asperity.heights.weibull", "asperity.heights.pearson", "asperity.heights.johnson",
+                   "asperity.heights.mixture", "asperity.heights.empirical", "asperity.heights.registry",
+                   "asperity.heights.fit"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {

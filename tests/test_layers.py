@@ -29,7 +29,7 @@ LAYERS = [
               "quantities"}),
     ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "maugis_dugdale_branch"}),
     ("statistics, groups", {"groups", "heights"}),
-    ("integrals", {"asperity_law", "tabulation", "multi_asperity"}),
+    ("integrals", {"asperity_law", "tabulation", "height_sums", "multi_asperity"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle"}),
     ("physical", {"materials", "physical", "surface", "regimes", "topography"}),
     ("applications", {"fit", "sweeps", "validation"}),
