@@ -175,7 +175,24 @@ class Empirical(HeightDistribution):
 
     @classmethod
     def from_file(cls, path, *, components: int = COMPONENTS) -> Empirical:
-        """:meth:`from_samples` of a one-column file of summit heights (:func:`~asperity.heights.samples.read_samples`)."""
+        """:meth:`from_samples` of a one-column file of summit heights (:func:`~asperity.heights.read_samples`).
+
+        Parameters
+        ----------
+        path : str or os.PathLike
+            One summit height per line, any unit.
+        components : int
+            Largest number of kernel centres.
+
+        Returns
+        -------
+        Empirical
+
+        Raises
+        ------
+        ValueError
+            If the file cannot be read or holds bad or too few heights (message names the file).
+        """
         return cls.from_samples(read_samples(path), components=components, source=os.fsdecode(os.fspath(path)))
 
     def __repr__(self) -> str:

@@ -36,9 +36,9 @@ import numpy as np
 from scipy import special
 
 from .._validation import as_float_array, check_scalar_range
+from ..quadrature import gauss_legendre
 from .base import EDGE_BAND, SF_FLOOR, TAIL, HeightDistribution, check_order, tanh_sinh
 from .johnson_fit import fit_johnson, sb_moments, su_moments
-from ..quadrature import gauss_legendre
 
 __all__ = ["Johnson", "KURT_MAX"]
 

@@ -38,7 +38,7 @@ import functools
 import math
 
 import numpy as np
-from scipy import optimize, special
+from scipy import optimize
 
 from ..quadrature import gauss_legendre
 

@@ -76,7 +76,8 @@ def read_samples(path) -> np.ndarray:
             if first:  # a header
                 first = False
                 continue
-            raise ValueError(f"{name}: line {number}: expected one number per line, got {line.strip()[:40]!r}") from None
+            raise ValueError(f"{name}: line {number}: expected one number per line, "
+                             f"got {line.strip()[:40]!r}") from None
         first = False
         if not math.isfinite(x):
             raise ValueError(f"{name}: line {number}: summit heights must be finite, got {line.strip()[:40]!r}")
