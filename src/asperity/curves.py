@@ -21,7 +21,7 @@ import numpy as np
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import as_float_array, scalar
 from .asperity_law import ContactLaw, ModelParameters, check_law
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
 from .multi_asperity import friction_coefficient, mean_pressure
 from .quantities import CURVE_COLUMNS
@@ -107,9 +107,7 @@ class Model:
                  heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None):
         kwargs = {} if friction is None else {"friction": friction}
         self.params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
-        if not isinstance(heights, HeightDistribution):
-            raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
-        self.heights = heights
+        self.heights = check_heights(heights)
         self.law = check_law(law, self.params)
         #: Largest valid separation: beyond it every quantity underflows.
         self.d_top = D_MAX - self.law.u_end
@@ -130,6 +128,7 @@ class Model:
     def _parameters(self):
         p = asdict(self.params)
         p["friction"] = repr(self.params.friction)
+        p["heights"] = self.heights.spec or repr(self.heights)
         return p
 
     def _result(self, d, sums) -> CurveResult:

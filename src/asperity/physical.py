@@ -46,7 +46,7 @@ from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import as_float_array, check_nonnegative, check_positive, check_scalar_positive
 from .curves import CurveResult, Model, PullOff
 from .friction_stress import ConstantShear, FrictionLaw
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
 from .quantities import CURVE_COLUMNS
@@ -181,7 +181,7 @@ class PhysicalContact:
         self.h = self.material.b if h is None and self.material.h is None else \
             check_scalar_positive(self.material.h if h is None else h, "h", "m")
         self.friction = self._friction_law(friction)
-        self.heights = heights
+        self.heights = check_heights(heights)
 
     def _friction_law(self, friction) -> FrictionLaw | None:
         if friction is None or isinstance(friction, FrictionLaw):
@@ -272,7 +272,8 @@ class PhysicalContact:
                 "b_m": self.b, "w_J_m2": self.w, "h_m": self.h, "sigma_s_m": s.sigma_s, "R_m": s.R,
                 "eta_per_m2": s.eta, "area_m2": s.area, "N": self.N, "alpha": self.alpha, "beta": self.beta,
                 "gamma": self.gamma, "lambda": self.lam, "force_scale_N": self.force_scale,
-                "area_scale_m2": self.area_scale, "friction": repr(self.model.params.friction)}
+                "area_scale_m2": self.area_scale, "friction": repr(self.model.params.friction),
+                "heights": self.heights.spec or repr(self.heights)}
 
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:

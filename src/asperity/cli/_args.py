@@ -5,7 +5,9 @@
   integer, a non-finite value) are errors, never repaired, and no list may hold more than
   :data:`MAX_POINTS` points (checked before anything is allocated).
 * :func:`quantity` and :func:`quantity_list`: the same with units (``2nm``, ``1mN:1N:50``).
-* The shared argument groups: :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b),
+* The shared argument groups: :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b, and
+  the summit-height distribution ``--heights``, spelt as :data:`HEIGHTS_HELP` lists and read by
+  :func:`asperity.heights.parse_heights`),
   :func:`add_contact_arguments` (a physical contact: material and surface),
   :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``), with help texts from
   :mod:`asperity.quantities`; and what builds the model from them:
@@ -41,6 +43,8 @@ __all__ = [
     "title",
     "UNITS",
     "MODEL_HELP",
+    "HEIGHTS_HELP",
+    "heights_from_args",
 ]
 
 #: Largest number of points a list or a ``start:stop:count`` range may hold.
@@ -53,6 +57,14 @@ UNITS = ("\n".join(f"  {name:9s} {q.meaning}" for name, q in CURVE_COLUMNS.items
 
 #: ``--help`` text of each model parameter (from :data:`asperity.quantities.MODEL_PARAMETERS`).
 MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", "gamma", "nu", "h_over_b")}
+
+#: ``--help`` text of ``--heights``: the spellings of :data:`asperity.heights.SPELLINGS` (a test
+#: checks they agree; the registry itself would load SciPy before ``--help`` is answered).
+HEIGHTS_HELP = ("summit-height distribution, standardised to mean 0 and deviation sigma_s: gaussian (default, "
+                "Eq 19), exponential, weibull:skew=S (-1..2), pearson3:skew=S (-2..2), johnson:skew=S,kurt=K, "
+                "mixture:w=W,m1=M1,s1=S1,m2=M2,s2=S2 (two Gaussians, any unit), empirical:FILE (a one-column "
+                "file of measured summit heights, any unit), best:FILE (the best-ranked fit to them; see "
+                "'asperity surface --summits')")
 
 #: The physical-contact options, in the order they are listed in messages.
 CONTACT_OPTIONS = ("material", "sigma", "radius", "density", "area")
@@ -231,6 +243,7 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
     g.add_argument("--nu", type=float, default=None, help=MODEL_HELP["nu"])
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=1.0, help=MODEL_HELP["h_over_b"])
+    g.add_argument("--heights", metavar="SPEC", default=None, help=HEIGHTS_HELP)
 
 
 def _meaning(name: str) -> str:
@@ -289,27 +302,39 @@ def is_physical(args) -> bool:
     return False
 
 
+def heights_from_args(args):
+    """The height distribution of ``--heights`` (the Gaussian without it), read by
+    :func:`asperity.heights.parse_heights`."""
+    from ..heights import GAUSSIAN, parse_heights
+
+    spec = getattr(args, "heights", None)
+    return GAUSSIAN if spec is None else parse_heights(spec)
+
+
 def model_from_args(args):
-    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b``."""
+    """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b --heights``."""
     from ..curves import Model
 
     nu = 0.3 if args.nu is None else args.nu
-    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b)
+    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b,
+                 heights=heights_from_args(args))
 
 
 def contact_from_args(args):
-    """The :class:`asperity.physical.PhysicalContact` of the physical-contact group."""
+    """The :class:`asperity.physical.PhysicalContact` of the physical-contact group (and ``--heights``)."""
     from ..physical import PhysicalContact, Surface
 
     surface = Surface(quantity(args.sigma, "m", "--sigma"), quantity(args.radius, "m", "--radius"),
                       quantity(args.density, "1/m^2", "--density"), quantity(args.area, "m^2", "--area"))
-    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion)
+    return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion, heights=heights_from_args(args))
 
 
 def title(args) -> str:
     """One line naming the contact or the model parameters (plot titles)."""
     if args.material:
         return (f"{args.material}: sigma_s={args.sigma}, R={args.radius}, eta={args.density}, "
-                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}")
+                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}"
+                + (f", heights {args.heights}" if getattr(args, "heights", None) else ""))
+    heights = f", heights {args.heights}" if getattr(args, "heights", None) else ""
     return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma or 0:g}, "
-            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}")
+            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}{heights}")

@@ -45,7 +45,7 @@ from .johnson import Johnson
 from .mixture import Mixture
 from .pearson import PearsonIII
 from .registry import DISTRIBUTIONS, SPELLINGS, distribution, parse_heights
-from .samples import read_samples, sample_moments
+from .samples import MIN_SAMPLES, read_samples, sample_moments, write_samples
 from .weibull import Weibull
 
 __all__ = [
@@ -66,6 +66,8 @@ __all__ = [
     "FitResult",
     "HeightsFit",
     "read_samples",
+    "write_samples",
+    "MIN_SAMPLES",
     "sample_moments",
     "check_heights",
     "gw_moment_quadrature",

@@ -181,6 +181,8 @@ def _ml_skew(cls, z, lo, hi):
 def _em_mixture(z, iterations=2000):
     """Two-Gaussian maximum likelihood by EM from a split at the median (mean and variance kept)."""
     lo, hi = z[z <= np.median(z)], z[z > np.median(z)]
+    if min(lo.size, hi.size) < 2:  # (nearly) a point mass on one side: no two-component fit
+        return None
     w, m, s = np.array([0.5, 0.5]), np.array([lo.mean(), hi.mean()]), np.array([lo.std(), hi.std()]) + 0.05
     last = -math.inf
     for _ in range(iterations):

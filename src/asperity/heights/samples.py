@@ -15,7 +15,7 @@ import numpy as np
 
 from .._validation import as_float_array
 
-__all__ = ["MIN_SAMPLES", "read_samples", "check_samples", "sample_moments", "standardise"]
+__all__ = ["MIN_SAMPLES", "read_samples", "write_samples", "check_samples", "sample_moments", "standardise"]
 
 #: Fewest summit heights a distribution is built from or fitted to.
 MIN_SAMPLES = 20
@@ -34,8 +34,8 @@ def check_samples(samples, name: str = "samples") -> np.ndarray:
         raise ValueError(f"{name} must be a 1-D array of summit heights, got shape {z.shape}")
     if z.size < MIN_SAMPLES:
         raise ValueError(f"{name} must hold at least {MIN_SAMPLES} summit heights, got {z.size}")
-    if not np.std(z) > 0:
-        raise ValueError(f"{name}: all {z.size} summit heights are equal; no distribution to fit")
+    if not np.std(z) > 1e-12 * np.max(np.abs(z)):
+        raise ValueError(f"{name}: all {z.size} summit heights are equal (to rounding); no distribution to fit")
     return z
 
 
@@ -86,6 +86,31 @@ def read_samples(path) -> np.ndarray:
         return check_samples(np.array(values, dtype=float), "summit heights")
     except ValueError as err:
         raise ValueError(f"{name}: {err}") from None
+
+
+def write_samples(path, samples, header: str = "z") -> None:
+    """Write summit heights one per line under a header, atomically (:func:`read_samples` reads them back exactly).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file to create or replace.
+    samples : array_like
+        Summit heights (see :func:`check_samples`).
+    header : str
+        First line, e.g. ``'z_m'`` for heights in metres.
+
+    Raises
+    ------
+    ValueError
+        For bad samples.
+    OSError
+        If the file cannot be written (nothing is then left behind).
+    """
+    from .._atomic import atomic_write
+
+    z = check_samples(samples)
+    atomic_write(path, header + "\n" + "".join(f"{x!r}\n" for x in z.tolist()))
 
 
 def standardise(z) -> np.ndarray:
