@@ -46,7 +46,7 @@ import numpy as np
 
 from .asperity_law import ContactLaw
 from .heights import EDGE_BAND, HeightDistribution
-from .heights.base import tanh_sinh
+from .heights.base import decay_length, tanh_sinh
 from .heights.mixture import (
     mixture_panel_sums,
     mixture_pdf,
@@ -220,7 +220,8 @@ class HeightSums:
         for bp in law.breakpoints:
             if bp > law.u_end:
                 first = min(first, (bp - law.u_end) / 3.0)
-        first = min(first, 0.2, self.width)
+        # far in a light tail the integrand falls within the decay length sf/pdf of the lower limit
+        first = min(first, 0.2, self.width, 3.0 * decay_length(h, min(hi_d + law.u_end, h.z_end)))
         edges = panel_edges(law.u_end, u_top, first, law.breakpoints, lo_clip=u_bottom)
         edges = self._refine(edges)
         u, w = composite_nodes(edges)

@@ -54,7 +54,7 @@ from .._validation import as_float_array
 from ..quadrature import gauss_legendre
 
 __all__ = ["HeightDistribution", "TAIL", "SF_FLOOR", "EDGE_BAND", "check_heights", "check_order", "tanh_sinh",
-           "gw_moment_quadrature"]
+           "gw_moment_quadrature", "decay_length"]
 
 #: Tail share taken as negligible: z_top and z_bottom are where sf and cdf fall below it
 #: (the Gaussian's z_top = 10 has sf = 7.6e-24).
@@ -256,22 +256,34 @@ def tanh_sinh(step: float = 0.1, t_max: float = 3.3):
     return x[keep], one_minus_x[keep], w[keep]
 
 
-def _pieces(dist: HeightDistribution, span: float):
+def _pieces(dist: HeightDistribution, span: float, first: float | None = None):
     """Distances t from the lower end and weights on [0, span]: tanh-sinh on the end pieces
-    (a support edge, :math:`(z-d)^n`), 20-point Gauss-Legendre between."""
+    (a support edge, :math:`(z-d)^n`), 20-point Gauss-Legendre between, the panels growing
+    geometrically from ``first`` (the tail's decay length) to the resolution."""
     width = min(1.0, 2.0 * dist.resolution)
+    first = width if first is None else min(width, first)
     x, xm, w = tanh_sinh()
-    if span <= 2.0 * width:
+    if span <= 2.0 * first:
         return span * x, span * w
-    nodes, weights = [width * x, span - width * xm[::-1]], [width * w, width * w[::-1]]
-    inner = span - 2.0 * width
-    m = int(math.ceil(inner / width))
+    nodes, weights = [first * x, span - first * xm[::-1]], [first * w, first * w[::-1]]
+    edges, t = [first], first
+    step = first
+    while t < span - first:
+        step = min(2.0 * step, width)
+        t = min(t + step, span - first)
+        edges.append(t)
+    edges = np.array(edges)
     g, gw = gauss_legendre(20)
-    h = inner / m
-    left = width + h * np.arange(m)
-    nodes.append((left[:, None] + h * g[None, :]).ravel())
-    weights.append(np.tile(h * gw, m))
+    h = np.diff(edges)
+    nodes.append((edges[:-1, None] + h[:, None] * g[None, :]).ravel())
+    weights.append((h[:, None] * gw[None, :]).ravel())
     return np.concatenate(nodes), np.concatenate(weights)
+
+
+def decay_length(dist: HeightDistribution, z: float) -> float:
+    """``sf(z)/pdf(z)``, the length over which the upper tail falls by e at height z (inf where pdf = 0)."""
+    f = float(dist.pdf(z))
+    return float(dist.sf(z)) / f if f > 0 else math.inf
 
 
 def gw_moment_quadrature(dist: HeightDistribution, d, order: float):
@@ -283,7 +295,8 @@ def gw_moment_quadrature(dist: HeightDistribution, d, order: float):
 
     on fixed panels no wider than twice the distribution's resolution: tanh-sinh on the
     first and last (the :math:`(\bar z-\bar d)^n` endpoint and a support edge), 20-point
-    Gauss-Legendre between.  The truncation drops a share below :data:`TAIL` (the upper end
+    Gauss-Legendre between; far in a light tail the first panels shrink to half the decay
+    length :math:`Q(a)/\phi(a)` and grow geometrically.  The truncation drops a share below :data:`TAIL` (the upper end
     reaches as far above :math:`a` as the distribution's whole range, so the relative
     accuracy holds far in the upper tail).
 
@@ -314,7 +327,7 @@ def gw_moment_quadrature(dist: HeightDistribution, d, order: float):
         b = min(hi_s, a + dist.z_top - dist.z_bottom)
         if not a < b:
             continue
-        t, w = _pieces(dist, b - a)
+        t, w = _pieces(dist, b - a, 0.5 * decay_length(dist, a))
         flat[i] = np.sum(w * ((a - di) + t) ** order * dist.pdf(a + t))
     return out
 

@@ -79,18 +79,19 @@ def stirling_error(k: float) -> float:
 def _log1p_minus(t):
     """ln(1+t) - t without cancellation for small t (a series where |t| < 0.1)."""
     t = np.asarray(t, dtype=float)
+    flat = t.reshape(-1)
     with np.errstate(divide="ignore", invalid="ignore"):
-        out = np.log1p(t) - t
-    small = np.abs(t) < 0.1
+        out = np.log1p(flat) - flat
+    small = np.abs(flat) < 0.1
     if np.any(small):
-        ts = t[small]
+        ts = flat[small]
         series = np.zeros_like(ts)
         power = ts * ts
         for n in range(2, 20):
             series += (-1.0) ** (n + 1) * power / n
             power = power * ts
         out[small] = series
-    return out
+    return out.reshape(t.shape)
 
 
 @dataclass(frozen=True)

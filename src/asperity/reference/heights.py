@@ -92,7 +92,7 @@ def _weibull(skew):
         grid = [mpmath.mpf(1) * 1.1**k for k in range(0, 60)]
         vals = [sk(c) - skew for c in grid]
         j = next(i for i in range(len(grid) - 1) if vals[i] >= 0 >= vals[i + 1])
-        c = mpmath.findroot(lambda c: sk(c) - skew, (grid[j], grid[j + 1]), solver="anderson")
+        c = mpmath.findroot(lambda c: sk(c) - skew, (grid[j], grid[j + 1]), solver="illinois", tol=1e-50, maxsteps=200)
         g1, g2 = mpmath.gamma(1 + 1 / c), mpmath.gamma(1 + 2 / c)
         sd = mpmath.sqrt(g2 - g1**2)
         lo = -g1 / sd
@@ -330,8 +330,11 @@ def gw_moment_ref(dens: RefDensity, d, order) -> float:
         pts = _points(dens, a, b)
         pts = [mpmath.mpf(p) for p in pts]
         dm = mpmath.mpf(d)
-        if a > dens.z_top - 1:  # far in the tail: refine next to the lower end
-            pts = sorted(set(pts) | {pts[0] + mpmath.mpf(2) ** -k for k in range(1, 12)})
+        # refine next to the lower end: far in a light tail the integrand falls within 1e-2
+        extra = {pts[0] + mpmath.mpf(2) ** -k for k in range(1, 14) if pts[0] + 2.0**-k < b}
+        if dens.mp_pdf(pts[0] + mpmath.mpf("1e-9")) < 1e-8 * dens.mp_pdf(mpmath.mpf(0)):  # far in a tail
+            extra |= {pts[0] + mpmath.mpf(k) / 256 for k in range(1, 129) if pts[0] + k / 256 < b}
+        pts = sorted(set(pts) | extra)
         return float(mpmath.quad(lambda z: (z - dm) ** n * dens.mp_pdf(z), pts))
 
 

@@ -188,8 +188,7 @@ def _integrate_density(d, p, names, dens):
         return dict.fromkeys(names, 0.0)
     s_max = math.sqrt(z_hi - z0)
     marks = [max(z0, dens.lo), *dens.breaks()] + [float(k) for k in range(math.ceil(max(z0, -12.0)), 13)]
-    if z0 > dens.z_top - 1:  # far in the tail: refine next to the lower end
-        marks += [z0 + 2.0**-k for k in range(1, 12)]
+    marks += [max(z0, dens.lo) + 2.0**-k for k in range(1, 14)]  # a light tail falls within 1e-2 of the end
     s_marks = [math.sqrt(z - z0) for z in marks if z0 < z < z_hi]
     pts = sorted({0.0, s_max, *[s_ for s_ in loc.s_breaks + loc.s_Pzero + s_marks if 0.0 < s_ < s_max]})
     out = {}
