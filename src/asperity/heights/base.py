@@ -261,7 +261,7 @@ def _pieces(dist: HeightDistribution, span: float, first: float | None = None):
     (a support edge, :math:`(z-d)^n`), 20-point Gauss-Legendre between, the panels growing
     geometrically from ``first`` (the tail's decay length) to the resolution."""
     width = min(1.0, 2.0 * dist.resolution)
-    first = width if first is None else min(width, first)
+    first = width if first is None or not first > 0 else min(width, max(first, 1e-12 * width))
     x, xm, w = tanh_sinh()
     if span <= 2.0 * first:
         return span * x, span * w

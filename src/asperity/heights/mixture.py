@@ -158,8 +158,9 @@ class Mixture(HeightDistribution):
         if not (s1 > 0 and s2 > 0):
             raise ValueError(f"s1, s2 (component deviations) must be > 0, got {self.s1!r}, {self.s2!r}")
         mean, var, _, _ = mixture_stats((w, 1 - w), (m1, m2), (s1, s2))
-        sd = math.sqrt(var)
-        m1, m2, s1, s2 = (m1 - mean) / sd, (m2 - mean) / sd, s1 / sd, s2 / sd
+        if abs(mean) > 1e-15 or abs(var - 1.0) > 4e-16:  # standardised already: keep the values (spec round trip)
+            sd = math.sqrt(var)
+            m1, m2, s1, s2 = (m1 - mean) / sd, (m2 - mean) / sd, s1 / sd, s2 / sd
         if min(s1, s2) < 0.02:
             raise ValueError(f"a component is narrower than 0.02 of the mixture's deviation (s1 = {s1:.3g}, "
                              f"s2 = {s2:.3g} after standardising): use a single Gaussian or a wider component")

@@ -29,7 +29,7 @@ def check_samples(samples, name: str = "samples") -> np.ndarray:
     ValueError
         For non-real or non-finite values, a 2-D array, too few values or zero spread.
     """
-    z = as_float_array(samples, name)
+    z = as_float_array(samples, name, allow_empty=True)
     if z.ndim != 1:
         raise ValueError(f"{name} must be a 1-D array of summit heights, got shape {z.shape}")
     if z.size < MIN_SAMPLES:

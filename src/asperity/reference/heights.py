@@ -14,7 +14,8 @@ written out again, not taken from the fast path:
   (:func:`mpmath.quad` over the normal variable), matched by :func:`mpmath.findroot` in
   (g, d), then standardised;
 * two-Gaussian mixture: mean and variance removed;
-* any Gaussian mixture (the empirical estimate): its components standardised.
+* any Gaussian mixture (the empirical estimate): its components standardised; its GW moments
+  sum the parabolic-cylinder closed form of each component (:func:`mpmath.pcfd`).
 
 :class:`RefDensity` gives a float density (for :func:`scipy.integrate.quad` in
 :mod:`.multi_asperity`), its support, a truncation height, and :func:`gw_moment_ref`,
@@ -255,7 +256,9 @@ def _gauss_mix(weights, means, sds, name):
 
     top = float(max(mi + 12 * si for mi, si in zip(m, s, strict=True)))
     bottom = float(min(mi - 12 * si for mi, si in zip(m, s, strict=True)))
-    return RefDensity(name, pdf, -math.inf, math.inf, bottom, top, fpdf)
+    dens = RefDensity(name, pdf, -math.inf, math.inf, bottom, top, fpdf)
+    dens.components = (w, m, s)
+    return dens
 
 
 def reference_density(name: str, **params) -> RefDensity:
@@ -322,6 +325,15 @@ def gw_moment_ref(dens: RefDensity, d, order) -> float:
     float
     """
     d, n = finite("d", d), finite("order", order)
+    if getattr(dens, "components", None) is not None:  # Gaussian mixture: parabolic-cylinder closed form
+        with MP.workdps(_DPS):
+            dm = mpmath.mpf(d)
+            total = 0
+            for wi, mi, si in zip(*dens.components, strict=True):
+                x = (dm - mi) / si  # int_x^inf (t - x)^n phi(t) dt = Gamma(n+1) e^(-x^2/4) D_(-n-1)(x)/sqrt(2 pi)
+                g = mpmath.gamma(n + 1) * mpmath.exp(-x * x / 4) * mpmath.pcfd(-n - 1, x) / mpmath.sqrt(2 * mpmath.pi)
+                total += wi * si**n * g
+            return float(total)
     a = max(d, dens.lo, dens.z_bottom)
     b = min(dens.hi, max(a, dens.z_top) + (dens.z_top - dens.z_bottom))
     if not a < b:
