@@ -32,6 +32,7 @@ FULL_DOCS = {
     "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
                               "invert_branch"],
     "asperity.pull_off_search": ["find_pull_off"],
+    "asperity.heights": ["parse_heights", "fit_heights"],
 }
 
 

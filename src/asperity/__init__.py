@@ -9,9 +9,10 @@ Layers, each importing only downward:
 * single-asperity laws: :mod:`~asperity.friction_stress`, :mod:`~asperity.hertz`,
   :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
-  :mod:`~asperity.heights`
+  :mod:`~asperity.heights` (Gaussian, exponential, Weibull, Pearson III, Johnson, mixture,
+  empirical summit heights)
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
-  :mod:`~asperity.multi_asperity`
+  :mod:`~asperity.multi_asperity` (:mod:`~asperity.height_sums` for non-Gaussian heights)
 * curves: :mod:`~asperity.curves`; the paper's figures: :mod:`~asperity.studies`;
   the command line: :mod:`~asperity.cli`
 
@@ -41,6 +42,14 @@ _EXPORTS = {
     "GAUSSIAN": "heights",
     "Gaussian": "heights",
     "HeightDistribution": "heights",
+    "Exponential": "heights",
+    "Weibull": "heights",
+    "PearsonIII": "heights",
+    "Johnson": "heights",
+    "Mixture": "heights",
+    "Empirical": "heights",
+    "parse_heights": "heights",
+    "fit_heights": "heights",
     "LAMBDA_C": "maugis_dugdale",
     "md_branch_end": "maugis_dugdale",
     "md_pull_off": "maugis_dugdale",
@@ -61,6 +70,7 @@ _SUBMODULES = (
     "dmt",
     "friction_stress",
     "groups",
+    "height_sums",
     "heights",
     "hertz",
     "jkr",
@@ -89,6 +99,14 @@ __all__ = [
     "GAUSSIAN",
     "Gaussian",
     "HeightDistribution",
+    "Exponential",
+    "Weibull",
+    "PearsonIII",
+    "Johnson",
+    "Mixture",
+    "Empirical",
+    "parse_heights",
+    "fit_heights",
     "LAMBDA_C",
     "md_branch_end",
     "md_pull_off",

@@ -58,7 +58,8 @@ from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_
 
 __all__ = ["HeightSums", "KernelGaussian", "CHEBYSHEV_POINTS", "D_MARGIN"]
 
-#: Chebyshev points per separation panel.
+#: Chebyshev points per separation panel (panels of twice the resolution: ~5e-14 relative;
+#: 16 points give ~5e-12, and 1e-9 on the second derivative).
 CHEBYSHEV_POINTS = 20
 #: The quadrature nodes serve separations this far (in sigma) beyond the separation panels.
 D_MARGIN = 0.5

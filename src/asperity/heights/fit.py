@@ -226,6 +226,10 @@ def fit_heights(samples) -> HeightsFit:
     >>> fit = fit_heights(z)
     >>> fit.ranking[0].name in ("weibull", "pearson3", "johnson"), round(fit.skewness, 1)
     (True, 1.1)
+
+    References
+    ----------
+    Akaike (1974); Dempster, Laird & Rubin (1977); Johnson (1949) for the moment fit.
     """
     x = check_samples(samples)
     z = standardise(x)

@@ -156,9 +156,15 @@ class PearsonIII(HeightDistribution):
 
     def pdf(self, z):
         """Density (module docstring), 0 outside the support."""
+        z = np.asarray(z, dtype=float)
         if self.skew == 0.0:
-            z = np.asarray(z, dtype=float)
             return np.exp(-0.5 * z * z) / _SQRT_2PI
+        t = 0.5 * self.skew * z
+        if self.k <= 16.0:  # k (ln(1+t) - t) loses at most k ulps of t: no series needed
+            with np.errstate(divide="ignore", invalid="ignore"):
+                lt = np.log1p(t)
+                f = np.exp(self.k * (lt - t) - lt - self._eps) / _SQRT_2PI
+            return np.where(t > -1.0, f, 0.0)
         t, inside = self._t(z)
         log_f = self.k * _log1p_minus(t) - np.log1p(t) - self._eps
         return np.where(inside, np.exp(log_f) / _SQRT_2PI, 0.0)

@@ -75,6 +75,10 @@ def distribution(name: str, **params) -> HeightDistribution:
     --------
     >>> distribution("pearson3", skew=-0.3)
     PearsonIII(skew=-0.3)
+
+    References
+    ----------
+    docs/heights.md (the families, their parameters and ranges).
     """
     if not isinstance(name, str):
         raise ValueError(f"heights: the distribution name must be a string, got {name!r}")
@@ -123,6 +127,10 @@ def parse_heights(spec) -> HeightDistribution:
     Johnson(skew=0.5, kurt=4.0)
     >>> parse_heights("gaussian")
     Gaussian()
+
+    References
+    ----------
+    docs/heights.md (the spellings); Adams et al., Eq (19) for ``gaussian``.
     """
     if isinstance(spec, HeightDistribution):
         return spec
