@@ -40,8 +40,10 @@ def test_engine_reproduces_the_gaussian_path(params):
     got = engine.sums(d, order=2)
     scale = np.abs(ref[0])
     assert rel(got[0], ref[0], scale) < 1e-12  # relative, also far in the tail (d = 20)
-    for j in (1, 2):  # derivatives: relative to max(|S_j|, |S_0|), per column
-        assert rel(got[j], ref[j], np.maximum(np.abs(ref[j]), scale)) < 1e-10
+    # derivatives, relative to max(|S_j|, |S_0|) per column: spectral differentiation of the
+    # interpolant costs a few digits (~n^4 eps (2/W)^2 for the second)
+    for j, tol in ((1, 1e-10), (2, 5e-10)):
+        assert rel(got[j], ref[j], np.maximum(np.abs(ref[j]), scale)) < tol
 
 
 @pytest.mark.parametrize("case", list(CASES))

@@ -15,8 +15,9 @@ which moves with :math:`\bar d` across fixed nodes.  :class:`HeightSums` therefo
    own variable);
 2. tabulates the ratio :math:`R(\bar d) = S(\bar d)/Q(\bar d + \bar u_{end})` to the
    survival function (the contact fraction, so :math:`R` stays smooth and the relative
-   accuracy holds far in the tail) at 20 Chebyshev points on panels of the separation no
-   wider than twice the ``resolution``, split and graded (factor 2, down to 1e-12) at the
+   accuracy holds far in the tail) at 20 Chebyshev points on panels of the separation
+   ``panel_resolutions`` (2, 1.5 for a mixture) ``resolution`` wide, split and graded
+   (factor 2, down to 1e-12) at the
    separations where :math:`S` is not smooth: where a support edge meets the law's
    endpoint or a breakpoint, :math:`\bar d = z_{edge} - \bar u_s`;
 3. interpolates :math:`S = QR` and its derivatives
@@ -56,11 +57,13 @@ from .heights.mixture import (
 )
 from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
 
-__all__ = ["HeightSums", "KernelGaussian", "CHEBYSHEV_POINTS", "D_MARGIN"]
+__all__ = ["HeightSums", "KernelGaussian", "CHEBYSHEV_POINTS", "GRADED_POINTS", "D_MARGIN"]
 
 #: Chebyshev points per separation panel (panels of twice the resolution: ~5e-14 relative;
 #: 16 points give ~5e-12, and 1e-9 on the second derivative).
 CHEBYSHEV_POINTS = 20
+#: Chebyshev points on the graded panels next to a singular separation.
+GRADED_POINTS = 12
 #: The quadrature nodes serve separations this far (in sigma) beyond the separation panels.
 D_MARGIN = 0.5
 _GRADE_MIN = 1e-12  # smallest graded panel next to a singular separation (relative)
@@ -175,7 +178,10 @@ class HeightSums:
         self.d_min, self.d_max = float(d_min), float(d_max)
         h = heights
         self.width = min(1.0, 2.0 * h.resolution)
-        self._W = 2.0 * h.resolution  # width of the separation panels
+        # Width of the separation panels: 2 resolutions for a single-humped density or a
+        # kernel estimate (~5e-14); the ratio R of a two-width mixture, whose narrow component
+        # hands its tail to the wide one, needs 1.5 (1e-12, against 1.5e-10 at 2).
+        self._W = h.panel_resolutions * h.resolution
         # Separation panels lie on a global grid (multiples of W, split at the singular
         # separations), so a wider tabulation inherits the panels already computed; the
         # quadrature nodes serve every panel that touches [d_min, d_max].
@@ -238,11 +244,14 @@ class HeightSums:
     # -- quadrature in penetration ------------------------------------------------------
     def _refine(self, edges):
         """Split every panel wider than ``width`` into equal parts (unit panels all alike)."""
-        out = [edges[:1]]
-        for a, b in zip(edges[:-1], edges[1:], strict=True):
-            k = max(1, int(math.ceil((b - a) / self.width - 1e-9)))
-            out.append(a + (b - a) * np.arange(1, k + 1) / k)
-        return np.concatenate(out)
+        widths = np.diff(edges)
+        parts = np.maximum(1, np.ceil(widths / self.width - 1e-9).astype(int))
+        if np.all(parts == 1):
+            return edges
+        start = np.repeat(edges[:-1], parts)
+        step = np.repeat(widths / parts, parts)
+        k = np.arange(parts.sum()) - np.repeat(np.cumsum(parts) - parts, parts)
+        return np.append(start + step * k, edges[-1])
 
     def _group(self):
         """Equal panels of the unit width (their nodes share offsets) go to panel_sums, the rest direct."""
@@ -342,7 +351,9 @@ class HeightSums:
             for us in (law.u_end, *law.breakpoints):
                 if us < law.u_end:
                     continue
-                beta = h.edge_power + 1.0  # S - smooth ~ |d - d*|^beta at least
+                # S - smooth ~ |d - d*|^beta at least: the law may jump at its endpoint (a
+                # Maugis-Dugdale branch end), it only kinks at a breakpoint (Hurtado-Kim radii)
+                beta = h.edge_power + (1.0 if us == law.u_end else 2.0)
                 depth = 10.0 ** (-13.0 / beta) if beta < 13.0 else math.inf
                 if e == h.support[1] and us == law.u_end:
                     depth = 0.0  # S/Q ~ |d - d*|^(1/2) where the support ends above
@@ -362,31 +373,41 @@ class HeightSums:
         self.d_edges = np.unique(np.clip(points, lo, hi))
 
     def _prepare(self, panels):
-        """Chebyshev coefficients of R on the given separation panels (evaluated in batches)."""
-        xc, T, D = _chebyshev(CHEBYSHEV_POINTS)
+        """Chebyshev coefficients of R on the given separation panels (evaluated in batches).
+
+        Panels narrower than W/4 lie next to a singular separation, at a distance of their
+        own width (the grading): 12 points reach 5.8^-12 ~ 1e-9 of the singular part, which
+        is itself below 1e-10 of R there; the others take CHEBYSHEV_POINTS.
+        """
         E, state = self.d_edges, self._state
         todo = [k for k in panels if state[k] == 0]
         for k in todo:
             if E[k] >= self.d_zero:
                 state[k] = 2  # zero: beyond the last summit (or the survival function's underflow)
-        todo = [k for k in todo if state[k] == 0]
-        i = 0
-        while i < len(todo):
-            j = i + 1
-            while j < len(todo) and E[todo[j] + 1] - E[todo[i]] <= _BATCH_SPAN and j - i < 20:
-                j += 1
-            batch = np.array(todo[i:j])
-            a, b = E[batch], E[batch + 1]
-            dn = (0.5 * (a + b)[:, None] + 0.5 * (b - a)[:, None] * xc).ravel()
-            S = self.direct(dn)
-            Q = self.heights.sf(dn + self.law.u_end)
-            R = (S / np.where(Q > 0, Q, 1.0)[:, None]).reshape(batch.size, CHEBYSHEV_POINTS, 4)
-            c0 = T @ R  # (batch, n, 4)
-            scale = (2.0 / (b - a))[:, None, None]
-            c1 = scale * (D @ c0)
-            self._C[0][batch], self._C[1][batch], self._C[2][batch] = c0, c1, scale * (D @ c1)
-            state[batch] = 1
-            i = j
+        todo = np.array([k for k in todo if state[k] == 0], dtype=int)
+        if todo.size == 0:
+            return
+        narrow = (E[todo + 1] - E[todo]) < 0.25 * self._W
+        for group, n in ((todo[~narrow], CHEBYSHEV_POINTS), (todo[narrow], GRADED_POINTS)):
+            xc, T, D = _chebyshev(n)
+            i = 0
+            while i < group.size:
+                j = i + 1
+                while j < group.size and E[group[j] + 1] - E[group[i]] <= _BATCH_SPAN and j - i < 20:
+                    j += 1
+                batch = group[i:j]
+                a, b = E[batch], E[batch + 1]
+                dn = (0.5 * (a + b)[:, None] + 0.5 * (b - a)[:, None] * xc).ravel()
+                S = self.direct(dn)
+                Q = self.heights.sf(dn + self.law.u_end)
+                R = (S / np.where(Q > 0, Q, 1.0)[:, None]).reshape(batch.size, n, 4)
+                c0 = T @ R  # (batch, n, 4)
+                scale = (2.0 / (b - a))[:, None, None]
+                c1 = scale * (D @ c0)
+                for C, c in zip(self._C, (c0, c1, scale * (D @ c1)), strict=True):
+                    C[batch, :n] = c  # coefficients beyond n stay zero
+                state[batch] = 1
+                i = j
 
     def sums(self, d, order: int = 0):
         """``[S_0, .., S_order]``: the four integrals (columns) and their d-derivatives, as Tabulation.sums."""
@@ -409,11 +430,12 @@ class HeightSums:
         a, b = E[kk], E[kk + 1]
         x = np.clip((2.0 * d[rows] - a - b) / (b - a), -1.0, 1.0)
         n = CHEBYSHEV_POINTS
-        Tx = np.empty((x.size, 1, n))
-        Tx[:, 0, 0] = 1.0
-        Tx[:, 0, 1] = x
+        Tx = np.empty((n, x.size))  # the recurrence on contiguous rows, then one transpose
+        Tx[0] = 1.0
+        Tx[1] = x
         for j in range(2, n):
-            Tx[:, 0, j] = 2.0 * x * Tx[:, 0, j - 1] - Tx[:, 0, j - 2]
+            Tx[j] = 2.0 * x * Tx[j - 1] - Tx[j - 2]
+        Tx = np.ascontiguousarray(Tx.T)[:, None, :]
         R = [(Tx @ self._C[j][kk])[:, 0] for j in range(order + 1)]
         z = d[rows] + self.law.u_end
         h = self.heights

@@ -64,7 +64,7 @@ SF_FLOOR = 1e-280
 #: Within this distance (in sigma) of a finite support edge a density may vary on any scale
 #: (a power law, a jump, Johnson S_B's logarithmic pile-up): ``resolution`` ignores the band,
 #: and the integrals integrate it with tanh-sinh instead of the fixed panels.
-EDGE_BAND = 1.0
+EDGE_BAND = 2.0
 
 
 class HeightDistribution(abc.ABC):
@@ -92,6 +92,9 @@ class HeightDistribution(abc.ABC):
         Smallest width, in sigma, over which the density changes (> 0, at most 1), away
         from a finite support edge (:data:`EDGE_BAND`): quadrature and interpolation panels
         are no wider than twice it.
+    panel_resolutions : float
+        Width of the separation panels the integrals interpolate on, in resolutions (2; a
+        two-width mixture needs 1.5).
     edge_power : float
         The density behaves like (distance to a finite support edge)^edge_power next to it
         (0: a jump, the default; ``inf``: flatter than any power); sets how finely the
@@ -110,6 +113,7 @@ class HeightDistribution(abc.ABC):
     support: tuple[float, float] = (-math.inf, math.inf)
     z_end: float = 35.0
     resolution: float = 1.0
+    panel_resolutions: float = 2.0
     edge_power: float = 0.0
     fast_sums: bool = False
     name: ClassVar[str] = ""

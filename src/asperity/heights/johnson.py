@@ -113,7 +113,8 @@ class Johnson(HeightDistribution):
         setattr_(self, "z_end", min(hi, self._height(_X_END)))
         # Resolution: the largest log-curvature where the density matters (>= 1e-4 of its peak),
         # away from a finite support edge (within EDGE_BAND of one the integrals use tanh-sinh).
-        z = np.linspace(max(self._height(-6.0), lo + EDGE_BAND), min(self._height(6.0), hi - EDGE_BAND), 4001)
+        band = min(EDGE_BAND, 0.25 * (hi - lo))  # a narrow S_B keeps its middle half
+        z = np.linspace(max(self._height(-6.0), lo + band), min(self._height(6.0), hi - band), 4001)
         f = self.pdf(z)
         curvature = np.max(np.abs(self._log_derivatives(z)[1])[f >= 1e-4 * f.max()])
         setattr_(self, "resolution", float(min(1.0, 1.0 / math.sqrt(curvature))))

@@ -145,6 +145,7 @@ class Mixture(HeightDistribution):
     s1: float = 0.6
     m2: float = -1.2
     s2: float = 1.2
+    panel_resolutions = 1.5  # the narrow component hands its tail to the wide one
     name: ClassVar[str] = "mixture"
     parameters: ClassVar[tuple[str, ...]] = ("w", "m1", "s1", "m2", "s2")
 
