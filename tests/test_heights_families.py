@@ -148,9 +148,13 @@ def test_pearson_at_zero_skewness_is_the_gaussian():
     p = PearsonIII(skew=0.0)
     z = np.linspace(-5, 5, 11)
     np.testing.assert_array_equal(p.pdf(z), GAUSSIAN.pdf(z))
-    # a small skewness: the first Edgeworth term, phi(z) (1 + s He3(z)/6), to O(s^2)
-    s = 1e-7
-    np.testing.assert_allclose(PearsonIII(skew=s).pdf(z), GAUSSIAN.pdf(z) * (1 + s * (z**3 - 3 * z) / 6), rtol=1e-11)
+    # a small skewness: the Edgeworth series to O(s^2) (excess kurtosis 1.5 s^2), error O(s^3)
+    s, x = 1e-3, np.linspace(-3, 3, 13)
+    he3, he4, he6 = x**3 - 3 * x, x**4 - 6 * x**2 + 3, x**6 - 15 * x**4 + 45 * x**2 - 15
+    edgeworth = GAUSSIAN.pdf(x) * (1 + s * he3 / 6 + s * s * (he6 / 72 + 1.5 * he4 / 24))
+    np.testing.assert_allclose(PearsonIII(skew=s).pdf(x), edgeworth, rtol=1e-7)
+    with pytest.raises(ValueError, match="must be 0 \\(the Gaussian\\) or at least 0.001"):
+        PearsonIII(skew=1e-5)
 
 
 def test_two_identical_gaussians_are_the_gaussian():
@@ -213,3 +217,15 @@ def test_moment_properties(case, d, step):
     h = 1e-5  # dF_1/dd = -F_0
     slope = (float(dist.moment(d + h, 1)) - float(dist.moment(d - h, 1))) / (2 * h)
     assert slope == pytest.approx(-F0, rel=1e-5, abs=1e-8)
+
+
+def test_two_identical_gaussians_give_the_gaussians_curves_to_rounding():
+    import asperity
+
+    m = Mixture(0.5, 0.0, 1.0, 0.0, 1.0)
+    for gamma in (0.0, 1e-3):
+        a = asperity.load_curve([0.1, 10.0, 1e3], 0.01, 1000.0, gamma, heights=m)
+        b = asperity.load_curve([0.1, 10.0, 1e3], 0.01, 1000.0, gamma)
+        for key in ("d", "F", "area", "contacts"):
+            np.testing.assert_allclose(getattr(a, key), getattr(b, key), rtol=4e-16, atol=0)
+    assert asperity.pull_off(0.003, 1000.0, 1e-3, heights=m).force == asperity.pull_off(0.003, 1000.0, 1e-3).force

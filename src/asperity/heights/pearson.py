@@ -44,10 +44,12 @@ from scipy import special
 from .._validation import as_float_array, check_scalar_range
 from .base import SF_FLOOR, TAIL, HeightDistribution, check_order, gw_moment_quadrature
 
-__all__ = ["PearsonIII", "pearson3_moment", "stirling_error", "SKEW_RANGE"]
+__all__ = ["PearsonIII", "pearson3_moment", "stirling_error", "SKEW_RANGE", "SKEW_MIN"]
 
 #: Valid skewness: |Sk| <= 2 keeps the shape k >= 1 (a bounded density).
 SKEW_RANGE = (-2.0, 2.0)
+#: Smallest non-zero |skewness|: the incomplete gamma function of shape 4/Sk^2 keeps ~1e-12.
+SKEW_MIN = 1e-3
 _SQRT_2PI = math.sqrt(2.0 * math.pi)
 
 
@@ -101,8 +103,9 @@ class PearsonIII(HeightDistribution):
     Parameters
     ----------
     skew : float
-        Skewness in [-2, 2]; 0 is the Gaussian, 2 the exponential, negative values have
-        the long tail below the mean (worn, plateau-like surfaces).
+        Skewness in [-2, 2], 0 or at least 1e-3 in magnitude; 0 is the Gaussian, 2 the
+        exponential, negative values have the long tail below the mean (worn, plateau-like
+        surfaces).
 
     Attributes
     ----------
@@ -122,6 +125,10 @@ class PearsonIII(HeightDistribution):
 
     def __post_init__(self):
         s = check_scalar_range(self.skew, "skew", *SKEW_RANGE, what="Pearson III skewness")
+        if 0.0 < abs(s) < SKEW_MIN:
+            raise ValueError(f"skew (Pearson III skewness) must be 0 (the Gaussian) or at least {SKEW_MIN:g} in "
+                             f"magnitude (below, the gamma shape 4/skew^2 > 4e6 and the survival function loses "
+                             f"digits in double precision), got {self.skew!r}")
         setattr_ = object.__setattr__
         setattr_(self, "skew", s)
         if s == 0.0:
@@ -138,16 +145,23 @@ class PearsonIII(HeightDistribution):
         setattr_(self, "k", k)
         setattr_(self, "_eps", stirling_error(k))
         setattr_(self, "edge_power", k - 1.0)
+        if abs(s) < 0.01:  # y/k - 1 would lose the height: the Cornish-Fisher bound, with margin
+            a = abs(s)
+            lo_, hi_, end = -10.0 - 20.0 * a, 10.0 + 20.0 * a, 36.0 + 250.0 * a
+        elif s > 0:
+            lo_, hi_, end = height(lower(k, TAIL)), height(upper(k, TAIL)), height(upper(k, SF_FLOOR))
+        else:
+            lo_, hi_, end = height(upper(k, TAIL)), height(lower(k, TAIL)), edge
         if s > 0:
             setattr_(self, "support", (edge, math.inf))
-            setattr_(self, "z_bottom", max(edge, height(lower(k, TAIL))))
-            setattr_(self, "z_top", height(upper(k, TAIL)))
-            setattr_(self, "z_end", height(upper(k, SF_FLOOR)))
+            setattr_(self, "z_bottom", max(edge, lo_))
+            setattr_(self, "z_top", hi_)
+            setattr_(self, "z_end", end)
         else:
             setattr_(self, "support", (-math.inf, edge))
-            setattr_(self, "z_bottom", height(upper(k, TAIL)))
-            setattr_(self, "z_top", min(edge, height(lower(k, TAIL))))
-            setattr_(self, "z_end", edge)
+            setattr_(self, "z_bottom", lo_)
+            setattr_(self, "z_top", min(edge, hi_))
+            setattr_(self, "z_end", min(edge, end))
 
     def _t(self, z):
         t = 0.5 * self.skew * np.asarray(z, dtype=float)
@@ -157,7 +171,7 @@ class PearsonIII(HeightDistribution):
     def pdf(self, z):
         """Density (module docstring), 0 outside the support."""
         z = np.asarray(z, dtype=float)
-        if self.skew == 0.0:
+        if self.k == math.inf:
             return np.exp(-0.5 * z * z) / _SQRT_2PI
         t = 0.5 * self.skew * z
         if self.k <= 16.0:  # k (ln(1+t) - t) loses at most k ulps of t: no series needed
@@ -185,7 +199,7 @@ class PearsonIII(HeightDistribution):
     def sf(self, z):
         """Survival function: the regularised incomplete gamma function of :math:`k(1+t)`."""
         z = np.asarray(z, dtype=float)
-        if self.skew == 0.0:
+        if self.k == math.inf:
             return special.ndtr(-z)
         x = self.k * np.maximum(1.0 + 0.5 * self.skew * z, 0.0)
         return special.gammaincc(self.k, x) if self.skew > 0 else special.gammainc(self.k, x)
