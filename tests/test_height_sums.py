@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 
 from asperity.asperity_law import AsperityLaw, ModelParameters
-from asperity.height_sums import HeightSums, KernelGaussian
+from asperity.height_sums import HeightSums
 from asperity.heights import GAUSSIAN, Exponential, Gaussian, Johnson, PearsonIII
+from asperity.heights.mixture import KernelGaussian
 from asperity.tabulation import Tabulation
 
 from .heights_cases import CASES, fast

@@ -48,16 +48,10 @@ import numpy as np
 from .asperity_law import ContactLaw
 from .heights import EDGE_BAND, HeightDistribution
 from .heights.base import decay_length, tanh_sinh
-from .heights.mixture import (
-    mixture_panel_sums,
-    mixture_pdf,
-    mixture_pdf_derivative,
-    mixture_sf,
-    mixture_weighted_sums,
-)
+from .heights.mixture import KernelGaussian
 from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
 
-__all__ = ["HeightSums", "KernelGaussian", "CHEBYSHEV_POINTS", "GRADED_POINTS", "D_MARGIN"]
+__all__ = ["HeightSums", "CHEBYSHEV_POINTS", "GRADED_POINTS", "D_MARGIN"]
 
 #: Chebyshev points per separation panel (panels of twice the resolution: ~5e-14 relative;
 #: 16 points give ~5e-12, and 1e-9 on the second derivative).
@@ -105,47 +99,6 @@ def _chebyshev_values(s, n: int):
     for k in range(2, n):
         T[..., k] = 2.0 * s * T[..., k - 1] - T[..., k - 2]
     return T
-
-
-class KernelGaussian(HeightDistribution):
-    """A Gaussian of standard deviation ``sd`` (not standardised): the kernel of a kernel estimate.
-
-    Only :class:`HeightSums` uses it, to tabulate the integrals of one kernel once.
-    """
-
-    fast_sums = True
-
-    def __init__(self, sd: float):
-        self.sd = float(sd)
-        self.z_top, self.z_bottom, self.z_end = 10.0 * self.sd, -10.0 * self.sd, 35.0 * self.sd
-        self.resolution = min(1.0, self.sd)
-        self._parts = ((1.0,), (0.0,), (self.sd,))
-
-    def __repr__(self) -> str:
-        return f"KernelGaussian(sd={self.sd!r})"
-
-    def __eq__(self, other) -> bool:
-        return isinstance(other, KernelGaussian) and other.sd == self.sd
-
-    __hash__ = None
-
-    def pdf(self, z):
-        """Density of N(0, sd^2)."""
-        return mixture_pdf(z, *self._parts)
-
-    def pdf_derivative(self, z, order: int):
-        """Its first or second derivative."""
-        return mixture_pdf_derivative(z, order, *self._parts)
-
-    def sf(self, z):
-        """Its survival function."""
-        return mixture_sf(z, *self._parts)
-
-    def weighted_sums(self, d, u, weights, order: int = 0):
-        return mixture_weighted_sums(d, u, weights, order, *self._parts)
-
-    def panel_sums(self, d, centers, offsets, weights, order: int = 0):
-        return mixture_panel_sums(d, centers, offsets, weights, order, *self._parts)
 
 
 class HeightSums:
