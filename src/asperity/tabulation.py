@@ -65,7 +65,9 @@ class Tabulation:
     d_min, d_max : float
         Range of separations :math:`d/\sigma` the nodes must serve, ``d_min <= d_max``.
     heights : HeightDistribution
-        Asperity height distribution (default Gaussian, Eq 19).
+        Asperity height distribution (default Gaussian, Eq 19).  One whose sums do not
+        factorise (``fast_sums`` False) is tabulated in the separation and interpolated by
+        :class:`asperity.height_sums.HeightSums`, to which :meth:`sums` then delegates.
     law : ContactLaw, optional
         Per-asperity law built for ``params`` (default: ``AsperityLaw(params)``, Hertz or
         Maugis-Dugdale with the friction law of ``params``).
@@ -103,7 +105,7 @@ class Tabulation:
         law = self.law
         z_top = heights.z_top
         # For a separation d the integrand peaks at u* = max(u_end, -d) and is negligible
-        # (< phi(z_top) relative) beyond u* + z_top and below -d - z_top.
+        # (< phi(z_top) relative) beyond u* + z_top and below z_bottom - d.
         u_top = max(z_top - self.d_min, law.u_end + z_top)
         u_bottom = heights.z_bottom - self.d_max
         first = law.scale
