@@ -154,3 +154,31 @@ def test_fit_afm_friction_example(tmp_path, capsys):
     fresh = maker.main(tmp_path / "regenerated.csv")
     assert fresh.read_text() == (EXAMPLES / "data" / "afm_friction_synthetic.csv").read_text()
     assert fresh.read_text().startswith("# SYNTHETIC DATA - not a measurement.")
+
+
+@pytest.mark.filterwarnings("ignore::asperity.PlasticityWarning")  # gold on this surface yields: noted by the example
+def test_skewed_surface_example(tmp_path, capsys):
+    from asperity.heights import GAUSSIAN, parse_heights
+    from asperity.physical import PhysicalContact
+    from asperity.topography import analyse_surface
+
+    spec = importlib.util.spec_from_file_location("skewed_surface", EXAMPLE.parent / "skewed_surface.py")
+    example = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(example)
+    analysis, curves, pulls = example.main(["--out", str(tmp_path)])
+    assert (tmp_path / "skewed_surface.png").read_bytes()[:4] == b"\x89PNG"
+    assert (tmp_path / "mu_gaussian_vs_measured.csv").read_text().startswith("P_N,mu_gaussian,mu_measured")
+    out = capsys.readouterr().out
+    assert "skewness" in out and "pull-off" in out and "note (elastic model)" in out
+    # The worn top gives negatively skewed summits; the same numbers straight from the library
+    ref = analyse_surface(tmp_path / "worn_scan.x3p")
+    assert ref.heights.skewness < -0.2 and ref.heights.skewness == analysis.heights.skewness
+    best = parse_heights(ref.heights.best.spec)
+    surface = ref.detected.surface(1e-6)
+    gauss, measured = (PhysicalContact("Au", surface, heights=h) for h in (GAUSSIAN, best))
+    (name_g, pull_g), (name_m, pull_m) = pulls.items()
+    assert pull_g.force == pytest.approx(gauss.pull_off().force, rel=1e-12)
+    assert pull_m.force == pytest.approx(measured.pull_off().force, rel=1e-12)
+    loads = np.geomspace(1e-2, 1e3, 60)[::20]
+    np.testing.assert_allclose(curves[name_m].mu[::20], measured.load_curve(loads).mu, rtol=1e-12)
+    assert pull_m.force != pytest.approx(pull_g.force, rel=0.05)  # the shape matters

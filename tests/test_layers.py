@@ -31,7 +31,7 @@ LAYERS = [
                               "jackson_green", "jackson_green_fits", "nix_gao", "maugis_dugdale_load", "cos",
                               "amontons"}),
     ("statistics, groups", {"groups", "heights"}),
-    ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
+    ("integrals", {"asperity_law", "tabulation", "height_sums", "multi_asperity", "elastic_plastic"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search", "cycle_run",
                 "cycle_result", "instrument", "interaction"}),
     ("physical", {"materials", "physical", "surface", "regimes", "topography", "plasticity", "physical_cycle", "icha",

@@ -47,7 +47,7 @@ from ._validation import as_float_array, check_nonnegative, check_positive, chec
 from .curves import CurveResult, Model, PullOff
 from .elastic_plastic import LAWS, plastic_fraction
 from .friction_stress import ConstantShear, FrictionLaw
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .interaction import interaction_for_surface
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
@@ -237,7 +237,7 @@ class PhysicalContact(ContactPlasticity):
         self.h = self.material.b if h is None and self.material.h is None else \
             check_scalar_positive(self.material.h if h is None else h, "h", "m")
         self.friction = self._friction_law(friction)
-        self.heights = heights
+        self.heights = check_heights(heights)
         s = surface
         self.interaction = interaction_for_surface(interaction, eta=s.eta, area=s.area, b=self.material.b,
                                                    sigma_s=s.sigma_s, nu=self.material.nu)
@@ -351,7 +351,8 @@ class PhysicalContact(ContactPlasticity):
                 "area_scale_m2": self.area_scale, "friction": repr(self.model.params.friction),
                 "interaction": self.interaction.name,
                 "law": self.law, "hardness_Pa": self.hardness, "h_star_m": self.h_star, "psi": psi,
-                "critical_interference_m": self.critical_interference}
+                "critical_interference_m": self.critical_interference,
+                "heights": self.heights.spec or repr(self.heights)}
 
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:
@@ -410,7 +411,8 @@ class PhysicalContact(ContactPlasticity):
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
         plastic = curve.plastic  # the plastic law's column; the elastic law is only checked
         if plastic is None and self.u_c is not None:
-            check_yield(plastic_share(plastic_fraction(curve.d, self.u_c, self.heights), curve.contacts),
+            d_local = curve.d if curve.d_local is None else curve.d_local  # as the asperities feel it
+            check_yield(plastic_share(plastic_fraction(d_local, self.u_c, self.heights), curve.contacts),
                         threshold=self.plastic_threshold, psi=self.plasticity_index,
                         critical_interference=self.critical_interference, law=self.law, stacklevel=4)
         return PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,

@@ -10,12 +10,11 @@ lmfit = pytest.importorskip("lmfit")
 # gold on this surface is past yield by design (the example's synthetic probe): the elastic model is what is tested
 pytestmark = pytest.mark.filterwarnings("ignore::asperity.PlasticityWarning")
 
+import asperity  # noqa: E402
 from asperity.fit import fit_friction_load, friction_load_data  # noqa: E402
 from asperity.fit.runner import RESTART_DECADES, restart_points  # noqa: E402
 from asperity.materials import material  # noqa: E402
 from asperity.physical import PhysicalContact, Surface  # noqa: E402
-
-import asperity  # noqa: E402
 
 
 def test_restart_points_move_each_free_log_parameter_a_decade_both_ways():

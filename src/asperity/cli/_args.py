@@ -7,7 +7,8 @@
 * :func:`quantity` and :func:`quantity_list`: the same with units (``2nm``, ``1mN:1N:50``).
 * The shared argument groups: :func:`add_model_arguments` (alpha, beta, gamma, nu, h/b, and
   the per-asperity law: ``--law``, ``--hardness``, ``--h-star``, ``--size-effect``,
-  ``--plastic-threshold``),
+  ``--plastic-threshold``; the summit-height distribution ``--heights``, spelt as :data:`HEIGHTS_HELP` lists and read by
+  :func:`asperity.heights.parse_heights`),
   :func:`add_contact_arguments` (a physical contact: material and surface),
   :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``), with help texts from
   :mod:`asperity.quantities`; and what builds the model from them:
@@ -46,6 +47,8 @@ __all__ = [
     "LAW_NAMES",
     "UNITS",
     "MODEL_HELP",
+    "HEIGHTS_HELP",
+    "heights_from_args",
 ]
 
 #: Largest number of points a list or a ``start:stop:count`` range may hold.
@@ -61,6 +64,14 @@ UNITS = ("\n".join(f"  {name:9s} {q.meaning}" for name, q in CURVE_COLUMNS.items
 
 #: ``--help`` text of each model parameter (from :data:`asperity.quantities.MODEL_PARAMETERS`).
 MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", "gamma", "nu", "h_over_b")}
+
+#: ``--help`` text of ``--heights``: the spellings of :data:`asperity.heights.SPELLINGS` (a test
+#: checks they agree; the registry itself would load SciPy before ``--help`` is answered).
+HEIGHTS_HELP = ("summit-height distribution, standardised to mean 0 and deviation sigma_s: gaussian (default, "
+                "Eq 19), exponential, weibull:skew=S (-1..2), pearson3:skew=S (-2..2), johnson:skew=S,kurt=K, "
+                "mixture:w=W,m1=M1,s1=S1,m2=M2,s2=S2 (two Gaussians, any unit), empirical:FILE (a one-column "
+                "file of measured summit heights, any unit), best:FILE (the best-ranked fit to them; see "
+                "'asperity surface --summits')")
 
 #: The physical-contact options, in the order they are listed in messages.
 CONTACT_OPTIONS = ("material", "sigma", "radius", "density", "area")
@@ -247,6 +258,7 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
     g.add_argument("--nu", type=float, default=None, help=MODEL_HELP["nu"])
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=1.0, help=MODEL_HELP["h_over_b"])
+    g.add_argument("--heights", metavar="SPEC", default=None, help=HEIGHTS_HELP)
     p = parser.add_argument_group("per-asperity law and plasticity (docs/plasticity.md)")
     p.add_argument("--law", metavar="NAME", default=None,
                    help=f"per-asperity law: {' or '.join(LAW_NAMES)} (default elastic: Hertz, or Maugis-Dugdale "
@@ -338,6 +350,15 @@ def is_physical(args) -> bool:
     return False
 
 
+def heights_from_args(args):
+    """The height distribution of ``--heights`` (the Gaussian without it), read by
+    :func:`asperity.heights.parse_heights`."""
+    from ..heights import GAUSSIAN, parse_heights
+
+    spec = getattr(args, "heights", None)
+    return GAUSSIAN if spec is None else parse_heights(spec)
+
+
 def _number(text, name: str):
     """A dimensionless option's text as a float (None stays None)."""
     if text is None:
@@ -360,11 +381,12 @@ def model_from_args(args):
     law = make_law(args.law or "elastic", H_over_E=_number(args.hardness, "--hardness"),
                    h_star_over_sigma=_number(args.h_star, "--h-star"))
     nu = 0.3 if args.nu is None else args.nu
-    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b, law=law)
+    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=args.h_over_b, law=law,
+                 heights=heights_from_args(args))
 
 
 def contact_from_args(args):
-    """The :class:`asperity.physical.PhysicalContact` of the physical-contact and plasticity options."""
+    """The :class:`asperity.physical.PhysicalContact` of the physical-contact, plasticity and ``--heights`` options."""
     from ..physical import PhysicalContact, Surface
 
     surface = Surface(quantity(args.sigma, "m", "--sigma"), quantity(args.radius, "m", "--radius"),
@@ -376,14 +398,16 @@ def contact_from_args(args):
     return PhysicalContact(args.material, surface, adhesion=not args.no_adhesion, plasticity=law,
                            hardness=None if hardness is None else quantity(hardness, "Pa", "--hardness"),
                            h_star=None if h_star is None else quantity(h_star, "m", "--h-star"),
-                           size_effect=True if size_effect else None, **kwargs)
+                           size_effect=True if size_effect else None,
+                           heights=heights_from_args(args), **kwargs)
 
 
 def title(args) -> str:
     """One line naming the contact or the model parameters (plot titles)."""
     law = "" if args.law in (None, "elastic") else f", {args.law}"
+    heights = f", heights {args.heights}" if getattr(args, "heights", None) else ""
     if args.material:
         return (f"{args.material}: sigma_s={args.sigma}, R={args.radius}, eta={args.density}, "
-                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}{law}")
+                f"area={args.area}{', no adhesion' if args.no_adhesion else ''}{law}{heights}")
     return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma or 0:g}, "
-            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}{law}")
+            f"nu={0.3 if args.nu is None else args.nu:g}, h/b={args.h_over_b:g}{law}{heights}")

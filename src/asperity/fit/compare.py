@@ -106,7 +106,8 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
         mine = {k: _restrict(v, own) for k, v in options.items()}
         if not mine["vary"]:
             mine["vary"] = None
-        results.append(fit_problem([data], [m], weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts, **mine))
+        results.append(fit_problem([data], [m], weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts,
+                                   **mine))
     ranked = sorted(results, key=lambda r: (not r.success, r.aic if r.aic == r.aic else float("inf")))
     return Comparison(tuple(ranked))
 
