@@ -6,9 +6,11 @@
 
 It solves the full elastic contact of the surface (boundary elements, ContactMechanics:
 ``pip install 'asperity[bem]'``) at loads giving about 0.5 % to 30 % real contact area,
-puts the Greenwood-Williamson model beside it (summit parameters from the spectral moments
-and from detected summits), prints the table, the largest deviation up to 20 % real area
-and the costs, and writes ``validation.csv`` and ``validation.png`` to ``--out``.
+puts the models beside it -- Greenwood-Williamson (summit parameters from the spectral
+moments and from detected summits), the interacting and coalescing Hertzian asperities on the
+scan's own summits (ICHA), Persson's area and the Bush-Gibson-Thomas light-load asymptote --
+prints the table, the largest deviation up to 20 % real area and the costs, and writes
+``validation.csv`` and ``validation.png`` to ``--out``.
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ import numpy as np
 
 from asperity.materials import material
 from asperity.validation import validate_surface
+from asperity.validation.models import MODELS
 from asperity.validation.surfaces import synthetic_surface
 
 
@@ -50,22 +53,24 @@ def main(argv=None):
         area = float(np.prod(topo.physical_sizes))
     # A/A0 ~ 2 p / (E* h'), h' ~ 0.1: these loads span about 0.5 % to 30 % real area
     loads = area * gold.E_star * np.geomspace(2.5e-4, 1.6e-2, args.loads)
-    result = validate_surface(surface, loads, material=gold, **kwargs)
+    result = validate_surface(surface, loads, material=gold, models=MODELS, **kwargs)
     t = result.columns()
     print(f"{result.bem.nb_grid_pts[0]} x {result.bem.nb_grid_pts[1]} grid, "
           f"{'periodic' if result.bem.periodic else 'free'} boundaries, {result.analysis.detected.n_summits} "
           f"summits, alpha_N = {result.analysis.spectral.alpha_n:.3g}")
-    print(f"{'P [N]':>10} {'A/A0 BEM':>9} {'GW/BEM spectral':>16} {'detected':>9} {'gap BEM [nm]':>13} "
-          f"{'gap GW [nm]':>12} {'spots':>6} {'GW contacts':>12}")
+    print("A_model/A_BEM:")
+    print(f"{'P [N]':>10} {'A/A0 BEM':>9} " + " ".join(f"{m:>9}" for m in result.methods) +
+          f" {'gap BEM [nm]':>13} {'gap GW':>7} {'gap ICHA':>8} {'spots':>6} {'GW':>6} {'ICHA':>5}")
     for i in range(len(result)):
-        print(f"{t['P_N'][i]:10.4g} {t['fraction_bem'][i]:9.4f} {1 + t['dev_spectral'][i]:16.3f} "
-              f"{1 + t['dev_detected'][i]:9.3f} {t['gap_bem_m'][i] * 1e9:13.3f} {t['gap_spectral_m'][i] * 1e9:12.3f} "
-              f"{t['spots_bem'][i]:6d} {t['contacts_spectral'][i]:12.1f}")
-    print(f"largest |A_GW/A_BEM - 1| up to 20 % real area: spectral {result.deviation('spectral'):.1%}, "
-          f"detected {result.deviation('detected'):.1%}")
+        print(f"{t['P_N'][i]:10.4g} {t['fraction_bem'][i]:9.4f} " +
+              " ".join(f"{1 + t[f'dev_{m}'][i]:9.3f}" for m in result.methods) +
+              f" {t['gap_bem_m'][i] * 1e9:13.3f} {t['gap_spectral_m'][i] * 1e9:7.2f} {t['gap_icha_m'][i] * 1e9:8.2f}"
+              f" {t['spots_bem'][i]:6d} {t['contacts_spectral'][i]:6.1f} {t['spots_icha'][i]:5d}")
+    print("largest |A_model/A_BEM - 1| up to 20 % real area: " +
+          ", ".join(f"{m} {result.deviation(m):.1%}" for m in result.methods))
     c = result.costs
-    print(f"cost: boundary elements {c['bem']:.2f} s, summit analysis {c['analysis'] * 1e3:.1f} ms, model "
-          f"{c['model'] * 1e3:.2f} ms; (analysis + model)/BEM = {result.cost_ratio:.1e}")
+    print(f"cost: boundary elements {c['bem']:.2f} s; model / BEM (each with its own analysis of the scan): " +
+          ", ".join(f"{m} {v:.1e}" for m, v in result.cost_ratios.items()))
     for warning in result.analysis.warnings:
         print(f"warning: {warning}")
     out = pathlib.Path(args.out)

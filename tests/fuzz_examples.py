@@ -177,6 +177,34 @@ def valid_calls(tmp: str) -> dict:
                                                         "E_star": 1e11},
         "asperity.validation.compare.validate_surface": lambda: {"surface": _bem_topography(), "P": [1e-3],
                                                                  "material": _hard()},
+        "asperity.validation.plot.plot_validation": lambda: {"result": _validation(),
+                                                             "path": os.path.join(tmp, "v.png")},
+        "asperity.validation.models.check_models": lambda: {"models": "gw,persson"},
+        # summit-height distributions
+        "asperity.heights.registry.distribution": lambda: {"name": "weibull", "skew": 0.5},
+        "asperity.heights.registry.parse_heights": lambda: {"spec": "pearson3:skew=0.5"},
+        "asperity.heights.fit.fit_heights": lambda: {"samples": _samples()},
+        "asperity.heights.samples.read_samples": lambda: {"path": _samples_file(tmp)},
+        "asperity.heights.samples.write_samples": lambda: {"path": os.path.join(tmp, "z.txt"), "samples": _samples()},
+        "asperity.heights.samples.check_samples": lambda: {"samples": _samples()},
+        "asperity.heights.samples.sample_moments": lambda: {"samples": _samples()},
+        "asperity.heights.base.check_heights": lambda: {"heights": _weibull()},
+        "asperity.heights.weibull.Weibull": lambda: {"skew": 0.5},
+        "asperity.heights.weibull.weibull_shape": lambda: {"skew": 0.5},
+        "asperity.heights.weibull.weibull_skewness": lambda: {"c": 2.0},
+        "asperity.heights.pearson.PearsonIII": lambda: {"skew": 0.5},
+        "asperity.heights.johnson.Johnson": lambda: {"skew": 0.5, "kurt": 4.0},
+        "asperity.heights.mixture.Mixture": lambda: {"w": 0.8, "m1": 0.3, "s1": 0.6, "m2": -1.2, "s2": 1.2},
+        "asperity.heights.exponential.Exponential": lambda: {},
+        "asperity.heights.empirical.Empirical": lambda: {"means": (-1.0, 0.0, 1.0), "weights": (0.25, 0.5, 0.25)},
+        "asperity.topography.detected.detected_summit_heights": lambda: {"topography": _bem_topography()},
+        # interacting asperities, Persson's and BGT's areas
+        "asperity.icha.contact.icha_contact": lambda: {"topography": _bem_topography(), "P": [1e-3], "E_star": 1e11},
+        "asperity.icha.summits.map_summits": lambda: {"heights": _bem_topography().heights(), "pixel_size": 2.5e-7,
+                                                      "periodic": True},
+        "asperity.persson.persson_area_fraction": lambda: {"p": [1e5, 1e6], "E_star": 1e11, "rms_slope": 0.1},
+        "asperity.persson.bgt_area_fraction": lambda: {"p": [1e5, 1e6], "E_star": 1e11, "rms_slope": 0.1},
+        "asperity.persson.rms_slope": lambda: {"topography": _bem_topography()},
         "asperity.validation.spots.count_spots": lambda: {"contact": np.eye(4, dtype=bool), "periodic": False},
         "asperity.validation.spots.label_spots": lambda: {"contact": np.eye(4, dtype=bool), "periodic": True},
     }
@@ -193,6 +221,32 @@ def _hard():
     from asperity.bodies import contact_material
 
     return contact_material(E=200e9, nu=0.3, b=2.5e-10)
+
+
+@functools.cache
+def _samples():
+    return 2e-9 * np.random.default_rng(3).standard_normal(300) ** 2  # skewed summit heights [m]
+
+
+@functools.cache
+def _samples_file(tmp: str) -> str:
+    path = os.path.join(tmp, "summits.txt")
+    np.savetxt(path, _samples())
+    return path
+
+
+@functools.cache
+def _weibull():
+    from asperity.heights import Weibull
+
+    return Weibull(0.5)
+
+
+@functools.cache
+def _validation():
+    from asperity.validation.compare import validate_surface
+
+    return validate_surface(_bem_topography(), [1e-3], material=_hard())
 
 
 def _force_data():
@@ -253,6 +307,33 @@ SKIP = {
                     "asperity.sweeps.store.open_store", "asperity.sweeps.store.MemoryStore",
                     "asperity.sweeps.store.NetCDFStore", "asperity.sweeps.store.ZarrStore")},
     "asperity.sweeps.store.open_result": "opens a finished sweep file with xarray (tests/test_sweeps.py)",
+    **{name: "an inner step of the height distributions (moments, quadrature, sums, fits) called by the "
+             "distributions and fit_heights on values they checked (those entry points are fuzzed)"
+       for name in ("asperity.heights.base.check_order", "asperity.heights.base.tanh_sinh",
+                    "asperity.heights.base.gw_moment_quadrature", "asperity.heights.base.decay_length",
+                    "asperity.heights.exponential.exponential_moment", "asperity.heights.gaussian.gaussian_moment",
+                    "asperity.heights.pearson.pearson3_moment", "asperity.heights.pearson.stirling_error",
+                    "asperity.heights.mixture.mixture_pdf", "asperity.heights.mixture.mixture_pdf_derivative",
+                    "asperity.heights.mixture.mixture_sf", "asperity.heights.mixture.mixture_moment",
+                    "asperity.heights.mixture.mixture_weighted_sums", "asperity.heights.mixture.mixture_panel_sums",
+                    "asperity.heights.mixture.mixture_stats", "asperity.heights.mixture.KernelGaussian",
+                    "asperity.heights.johnson_fit.su_moments", "asperity.heights.johnson_fit.sb_moments",
+                    "asperity.heights.johnson_fit.lognormal_line", "asperity.heights.johnson_fit.fit_johnson",
+                    "asperity.height_sums.HeightSums", "asperity.heights.fit.log_likelihood",
+                    "asperity.heights.fit.ks_distance", "asperity.heights.samples.standardise")},
+    "asperity.heights.base.HeightDistribution": "an abstract base class without parameters",
+    "asperity.heights.gaussian.Gaussian": "no parameters",
+    **{name: "an inner step of ICHA (field kernels, spot merging, the solver's state), called by icha_contact "
+             "(fuzzed) on the summits and loads it checked"
+       for name in ("asperity.icha.field.hertz_displacement", "asperity.icha.field.hertz_excess",
+                    "asperity.icha.field.boussinesq_rectangle_mean", "asperity.icha.field.FreeKernel",
+                    "asperity.icha.field.PeriodicKernel", "asperity.icha.solver.merge_spots",
+                    "asperity.icha.solver.IchaState", "asperity.icha.contact.icha_curve")},
+    **{name: "a step of validate_surface (fuzzed), called with the surface, loads and models it checked"
+       for name in ("asperity.validation.models.model_columns", "asperity.validation.models.run_icha",
+                    "asperity.validation.models.run_slope_law")},
+    **{name: "a step of the fitting engine's restarts, called by fit_problem on its own results"
+       for name in ("asperity.fit.runner.suspicious", "asperity.fit.runner.restart_points")},
     "asperity.validation.progress.progress_bar": "writes a progress report; its loads come from bem_contact",
     # The explorer's page: Bokeh objects driven by the page's State (tests/explorer, in a browser).
     **{name: "a part of the explorer's Bokeh page, driven by a validated State (tests/explorer)"
@@ -287,7 +368,8 @@ SKIP = {
         "asperity.fit.base.FitCurve", "asperity.fit.data.Dataset", "asperity.fit.engine.Term",
         "asperity.fit.engine.GlobalParameter", "asperity.fit.engine.Problem", "asperity.fit.result.ParameterEstimate",
         "asperity.fit.result.FitResult", "asperity.fit.result.Comparison", "asperity.sweeps.spec.SweepSpec",
-        "asperity.explorer.compute.Result")},
+        "asperity.explorer.compute.Result", "asperity.heights.fit.FitResult", "asperity.heights.fit.HeightsFit",
+        "asperity.icha.contact.IchaCurve", "asperity.icha.summits.MapSummits")},
 }
 
 
@@ -325,4 +407,8 @@ KNOWN_GAPS = {
     "asperity.sweeps.spec.read_points": "a path of a wrong type: an error without the parameter's name",
     "asperity.validation.compare.validate_surface": "huge or tiny loads overflow with a RuntimeWarning",
     "asperity.validation.surfaces.synthetic_surface": "a boolean seed or a huge size: errors without the name",
+    "asperity.validation.plot.plot_validation": "fmt, path and result are not checked (AttributeError)",
+    "asperity.heights.empirical.Empirical": "sd as a list (TypeError without the name), a huge sd overflows",
+    "asperity.heights.mixture.Mixture": "a component too narrow after standardising: the message names s1, s2, not "
+                                        "the mean that moved it",
 }

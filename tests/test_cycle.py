@@ -308,3 +308,32 @@ def test_compute_cycle_needs_cycle_integrals():
         CycleIntegrals("not a model")
     ci = CycleIntegrals(asperity.Model(*BELOW))
     assert compute_cycle(ci, d_min=0.0, n=5).energy == cycle(*BELOW, d_min=0.0, n=5).energy
+
+
+# -- other summit-height distributions (asperity.heights) ----------------------------------------
+HEIGHT_SPECS = ["weibull:skew=0.5", "pearson3:skew=-0.5", "exponential", "mixture:w=0.3,m1=-1,s1=0.5,m2=1,s2=0.8"]
+
+
+@pytest.mark.parametrize("spec", HEIGHT_SPECS)
+def test_cycles_with_other_heights_retraction_and_energy(spec):
+    from asperity.heights import parse_heights
+
+    h = parse_heights(spec)
+    p = BELOW
+    d = np.linspace(-2.0, 6.0, 17)
+    c = cycle(*p, d_min=-8.0, d=d, heights=h)
+    ref = asperity.separation_curve(d, *p, heights=h)
+    for name in ("P", "F", "area", "contacts"):
+        np.testing.assert_allclose(getattr(c.retract, name), getattr(ref, name), rtol=1e-9,
+                                   atol=1e-9 * np.abs(getattr(ref, name)).max())
+    # through the whole loop: touched (z >= d_min) and snapped off by d_max (z <= d_max + u_end)
+    c = cycle(*p, d_min=-0.4, n=20, heights=h)
+    u_end = law_of(p).u_end
+    still_stuck = float(h.sf(c.d_max + u_end))
+    assert c.loop_fraction == pytest.approx(float(h.sf(-0.4)) - still_stuck, rel=1e-9)
+    if still_stuck < 1e-12:  # every loop closed
+        assert c.energy == pytest.approx(c.loop_fraction * c.loop_energy, rel=1e-7)
+    else:  # a long upper tail: partial loops of the asperities still stuck at d_max
+        assert c.loop_fraction * c.loop_energy < c.energy < float(h.sf(-0.4)) * c.loop_energy
+    gauss = cycle(*p, d_min=-0.4, n=20)
+    assert c.loop_fraction != pytest.approx(gauss.loop_fraction, rel=1e-3)  # the shape is used

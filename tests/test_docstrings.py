@@ -15,13 +15,19 @@ import asperity
 DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity.maugis_dugdale_branch", "asperity.hertz", "asperity.jkr", "asperity.dmt",
-                   "asperity.heights", "asperity.bodies", "asperity.surface", "asperity.physical", "asperity.units",
+                   "asperity.bodies", "asperity.surface", "asperity.physical", "asperity.units",
                    "asperity.jackson_green", "asperity.jackson_green_fits",
                    "asperity.nix_gao", "asperity.elastic_plastic", "asperity.plasticity", "asperity.cycle",
                    "asperity.cycle_run", "asperity.cycle_integrals", "asperity.instrument", "asperity.physical_cycle",
                    "asperity.sweeps.run",
                    "asperity.maugis_dugdale_load", "asperity.cos", "asperity.amontons",
-                   "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare"]
+                   "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare",
+                   "asperity.persson", "asperity.icha.field", "asperity.icha.solver", "asperity.icha.summits",
+                   "asperity.icha.contact",
+                   "asperity.heights.base", "asperity.heights.gaussian", "asperity.heights.exponential",
+                   "asperity.heights.weibull", "asperity.heights.pearson", "asperity.heights.johnson",
+                   "asperity.heights.mixture", "asperity.heights.empirical", "asperity.heights.registry",
+                   "asperity.heights.fit"]
 
 #: Functions users call (README, docs/model.md): each carries the full numpydoc, not a pointer.
 FULL_DOCS = {
@@ -59,6 +65,10 @@ FULL_DOCS = {
     "asperity.physical_cycle": ["physical_cycle", "physical_preload_curve"],
     "asperity.instrument": ["base_displacement"],
     "asperity.sweeps.run": ["sweep"],
+    "asperity.persson": ["persson_area_fraction", "bgt_area_fraction", "rms_slope"],
+    "asperity.icha": ["icha_contact", "icha_curve", "map_summits", "merge_spots", "hertz_displacement", "hertz_excess",
+                      "boussinesq_rectangle_mean"],
+    "asperity.heights": ["parse_heights", "fit_heights"],
 }
 
 

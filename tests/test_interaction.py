@@ -130,3 +130,26 @@ def test_registry_and_errors():
     with pytest.raises(ValueError):
         interaction_for_surface(3, eta=1e12, area=1e-6, b=2.9e-10, sigma_s=2e-9)
     assert isinstance(interaction_for_surface(None, eta=1, area=1, b=1, sigma_s=1), NoInteraction)
+
+
+def test_yield_check_uses_the_separations_the_asperities_feel():
+    """With an interaction the yield check counts at the local separations: a share, never above 100 %."""
+    import re
+    import warnings
+
+    from asperity.elastic_plastic import plastic_fraction
+    from asperity.physical import PhysicalContact, Surface
+    from asperity.plasticity import PlasticityWarning, plastic_share
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e13, 1e-8), adhesion=False, interaction="cgp2008")
+    loads = np.geomspace(1e-4, 1.0, 7)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", PlasticityWarning)
+        curve = contact.load_curve(loads)
+    inner = curve.dimensionless
+    assert inner.d_local is not None and np.all(inner.d_local > inner.d)  # the interaction separates them
+    share = plastic_share(plastic_fraction(inner.d_local, contact.u_c, contact.heights), inner.contacts)
+    assert np.all((share >= 0) & (share <= 1))
+    (w,) = [w for w in caught if issubclass(w.category, PlasticityWarning)]
+    reported = float(re.search(r"up to ([0-9.]+)%", str(w.message)).group(1)) / 100
+    assert reported == pytest.approx(share.max(), abs=6e-4)

@@ -31,11 +31,11 @@ LAYERS = [
                               "jackson_green", "jackson_green_fits", "nix_gao", "maugis_dugdale_load", "cos",
                               "amontons"}),
     ("statistics, groups", {"groups", "heights"}),
-    ("integrals", {"asperity_law", "tabulation", "multi_asperity", "elastic_plastic"}),
+    ("integrals", {"asperity_law", "tabulation", "height_sums", "multi_asperity", "elastic_plastic"}),
     ("curves", {"curves", "load_control", "pull_off_search", "cycle", "cycle_integrals", "cycle_search", "cycle_run",
                 "cycle_result", "instrument", "interaction"}),
     ("physical", {"materials", "bodies", "physical", "physical_results", "surface", "regimes", "topography",
-                  "plasticity", "physical_cycle"}),
+                  "plasticity", "physical_cycle", "icha", "persson"}),
     ("applications", {"fit", "sweeps", "validation", "cycle_plot"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]

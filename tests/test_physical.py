@@ -289,7 +289,7 @@ def test_constant_shear_is_stated_in_pascals(surface):
 def test_contact_rejects_wrong_types(surface):
     with pytest.raises(TypeError, match="adhesion must be True or False"):
         PhysicalContact("Au", surface, adhesion="no")
-    with pytest.raises(TypeError, match="heights must be"):
+    with pytest.raises(ValueError, match="heights must be"):  # asperity.heights.check_heights
         PhysicalContact("Au", surface, heights=None)
 
 

@@ -12,7 +12,7 @@ from asperity.quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PLASTIC_COLUMNS
 
 def test_curve_columns_are_the_result_fields():
     assert list(COLUMNS) == list(CURVE_COLUMNS)
-    fields = [f for f in CurveResult.__dataclass_fields__ if f not in ("parameters", *PLASTIC_COLUMNS)]
+    fields = [f for f in CurveResult.__dataclass_fields__ if f not in ("parameters", "d_local", *PLASTIC_COLUMNS)]
     assert fields == list(CURVE_COLUMNS)
     assert all(name in CurveResult.__dataclass_fields__ for name in PLASTIC_COLUMNS)
     assert all(name in PhysicalCurve.__dataclass_fields__ for name in PLASTIC_COLUMNS)

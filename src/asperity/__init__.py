@@ -14,9 +14,11 @@ Layers, each importing only downward:
   :mod:`~asperity.amontons`, :mod:`~asperity.jackson_green` and
   :mod:`~asperity.jackson_green_fits` (elastic-plastic), :mod:`~asperity.nix_gao` (size effect)
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
-  :mod:`~asperity.heights`
+  :mod:`~asperity.heights` (Gaussian, exponential, Weibull, Pearson III, Johnson, mixture,
+  empirical summit heights)
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
-  :mod:`~asperity.multi_asperity`; the laws by name: :mod:`~asperity.elastic_plastic`
+  :mod:`~asperity.multi_asperity` (:mod:`~asperity.height_sums` for non-Gaussian heights);
+  the laws by name: :mod:`~asperity.elastic_plastic`
 * curves: :mod:`~asperity.curves`; loading-unloading cycles: :mod:`~asperity.cycle`
   (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); fitting measured data:
   :mod:`~asperity.fit`; the paper's figures: :mod:`~asperity.studies`;
@@ -57,6 +59,14 @@ _EXPORTS = {
     "GAUSSIAN": "heights",
     "Gaussian": "heights",
     "HeightDistribution": "heights",
+    "Exponential": "heights",
+    "Weibull": "heights",
+    "PearsonIII": "heights",
+    "Johnson": "heights",
+    "Mixture": "heights",
+    "Empirical": "heights",
+    "parse_heights": "heights",
+    "fit_heights": "heights",
     "LAMBDA_C": "maugis_dugdale",
     "md_branch_end": "maugis_dugdale",
     "md_pull_off": "maugis_dugdale",
@@ -85,8 +95,10 @@ _SUBMODULES = (
     "fit",
     "friction_stress",
     "groups",
+    "height_sums",
     "heights",
     "hertz",
+    "icha",
     "interaction",
     "jackson_green",
     "jackson_green_fits",
@@ -97,6 +109,7 @@ _SUBMODULES = (
     "multi_asperity",
     "instrument",
     "nix_gao",
+    "persson",
     "physical",
     "physical_cycle",
     "physical_results",
@@ -135,6 +148,14 @@ __all__ = [
     "GAUSSIAN",
     "Gaussian",
     "HeightDistribution",
+    "Exponential",
+    "Weibull",
+    "PearsonIII",
+    "Johnson",
+    "Mixture",
+    "Empirical",
+    "parse_heights",
+    "fit_heights",
     "LAMBDA_C",
     "md_branch_end",
     "md_pull_off",

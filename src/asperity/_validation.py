@@ -24,6 +24,7 @@ __all__ = [
     "check_radius",
     "check_range",
     "check_interval",
+    "check_scalar_range",
     "check_scalar_poisson",
     "check_scalar_positive",
     "check_optional_positive",
@@ -126,6 +127,24 @@ def check_interval(value, name: str, lo: float, hi: float, *, lo_open: bool = Fa
         left, right = "(" if lo_open else "[", ")" if hi_open else "]"
         raise ValueError(f"{name} must lie in {left}{lo:g}, {hi:g}{right}{context}, got {value!r}")
     return arr
+def check_scalar_range(value, name: str, lo: float, hi: float, *, what: str = "") -> float:
+    """One finite real number with lo <= value <= hi, as a float (shape parameters, weights).
+
+    ``what`` (e.g. ``"Weibull skewness"``) is named in the message beside ``name``.
+
+    Raises
+    ------
+    ValueError
+        For a boolean, complex, non-numeric, NaN, infinite, non-scalar or out-of-range value.
+    """
+    label = f"{name} ({what})" if what else name
+    arr = as_float_array(value, label)
+    if arr.ndim != 0:
+        raise ValueError(f"{label} must be a scalar, got an array of shape {arr.shape}")
+    x = float(arr)
+    if not lo <= x <= hi:
+        raise ValueError(f"{label} must lie in [{lo:g}, {hi:g}], got {value!r}")
+    return x
 
 
 def check_poisson(nu) -> np.ndarray:

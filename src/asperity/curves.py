@@ -21,7 +21,7 @@ import numpy as np
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import check_1d, check_scalar_real
 from .asperity_law import ContactLaw, ModelParameters, check_law
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .interaction import as_interaction
 from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
 from .multi_asperity import friction_coefficient, mean_pressure
@@ -52,6 +52,8 @@ class CurveResult:
     contacts: np.ndarray
     parameters: dict = field(default_factory=dict, compare=False)
     plastic: np.ndarray | None = None
+    #: The separations the asperities feel (an interaction shifts them from ``d``); None: ``d``.
+    d_local: np.ndarray | None = field(default=None, compare=False, repr=False)
 
     def __len__(self) -> int:
         return int(np.size(self.d))
@@ -125,9 +127,7 @@ class Model:
                  heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None, interaction=None):
         kwargs = {} if friction is None else {"friction": friction}
         self.params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
-        if not isinstance(heights, HeightDistribution):
-            raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
-        self.heights = heights
+        self.heights = check_heights(heights)
         if law is not None and not isinstance(law, ContactLaw) and callable(getattr(law, "contact_law", None)):
             law = law.contact_law(self.params)  # a law spec (asperity.elastic_plastic.LAWS)
         self.law = check_law(law, self.params)
@@ -154,6 +154,7 @@ class Model:
         if self._parameters_dict is None:
             p = {f.name: getattr(self.params, f.name) for f in fields(self.params)}
             p["friction"] = repr(self.params.friction)
+            p["heights"] = self.heights.spec or repr(self.heights)
             if self.interaction.active:
                 p["interaction"] = repr(self.interaction)
             if callable(getattr(self.law, "parameters", None)):  # e.g. the Jackson-Green law and its hardness
@@ -169,7 +170,8 @@ class Model:
                    else None)
         return CurveResult(d=d, P=P, F=F, mu=friction_coefficient(F, P), area=area,
                            pressure=mean_pressure(P, area, self.params.nu), contacts=contacts,
-                           parameters=self._parameters(), plastic=plastic)
+                           parameters=self._parameters(), plastic=plastic,
+                           d_local=None if d_local is d else d_local)
 
     # -- curves ---------------------------------------------------------------------
     def separation_curve(self, d) -> CurveResult:

@@ -25,7 +25,7 @@ import numpy as np
 
 from ._validation import as_float_array, check_poisson
 from .asperity_law import ModelParameters, check_law
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, check_heights
 from .tabulation import D_MAX, D_MIN, Tabulation, check_separation
 
 __all__ = [
@@ -44,8 +44,7 @@ __all__ = [
 def _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights):
     kwargs = {} if friction is None else {"friction": friction}
     params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
-    if not isinstance(heights, HeightDistribution):
-        raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
+    check_heights(heights)
     law = check_law(None, params)
     d = check_separation(d, d_max=D_MAX - law.u_end)
     tab = Tabulation(params, float(d.min()), float(d.max()), heights, law=law)

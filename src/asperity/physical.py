@@ -65,7 +65,7 @@ from ._validation import (
 from .curves import CurveResult, Model
 from .elastic_plastic import LAWS, plastic_fraction
 from .friction_stress import ConstantShear, FrictionLaw, HurtadoKim
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .interaction import interaction_for_surface
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
@@ -195,9 +195,7 @@ class PhysicalContact(ContactPlasticity):
         self.h = self.material.b if h is None and self.material.h is None else \
             check_scalar_positive(self.material.h if h is None else h, "h", "m")
         self.friction = self._friction_law(friction)
-        if not isinstance(heights, HeightDistribution):
-            raise TypeError(f"heights must be an asperity.heights.HeightDistribution, got {type(heights).__name__}")
-        self.heights = heights
+        self.heights = check_heights(heights)
         s = surface
         self.interaction = interaction_for_surface(interaction, eta=s.eta, area=s.area, b=self.material.b,
                                                    sigma_s=s.sigma_s, nu=self.material.nu)
@@ -321,7 +319,8 @@ class PhysicalContact(ContactPlasticity):
         (``'elastic'`` or ``'jackson-green'``), the hardness ``H_Pa`` (:math:`H_0` with the size
         effect; None if unknown), the Nix-Gao ``h_star_m`` (0 without the size effect), the
         plasticity index ``psi`` and ``critical_interference_m`` :math:`\omega_c` (None without
-        a hardness) and ``plastic_threshold`` (the yield check's share).
+        a hardness) and ``plastic_threshold`` (the yield check's share); the summit ``heights``
+        distribution (its ``--heights`` spelling, e.g. ``'gaussian'``).
         """
         s, body = self.surface, self.material.to_dict()
         si = {name: PHYSICAL_PARAMETERS[name].si_name for name in PHYSICAL_PARAMETERS}
@@ -334,7 +333,8 @@ class PhysicalContact(ContactPlasticity):
                 "force_scale_N": self.force_scale, "area_scale_m2": self.area_scale,
                 "interaction": self.interaction.name, "law": self.law, si["hardness"]: self.hardness,
                 si["h_star"]: self.h_star, "psi": None if self.hardness is None else self.plasticity_index,
-                "critical_interference_m": self.critical_interference, "plastic_threshold": self.plastic_threshold}
+                "critical_interference_m": self.critical_interference, "plastic_threshold": self.plastic_threshold,
+                "heights": self.heights.spec or repr(self.heights)}
 
     def parameters(self) -> dict:
         """Inputs, groups and scales (SI units): :meth:`to_dict`."""
@@ -370,6 +370,7 @@ class PhysicalContact(ContactPlasticity):
         w = f"w = {format_si(self.w, 'J/m^2')}" if self.w > 0 else "w = 0 (no adhesion: Hertz)"
         surface = (f"surface: sigma_s = {format_si(s.sigma_s, 'm')}, R = {format_si(s.R, 'm')}, "
                    f"eta = {s.eta:.4g} 1/m^2, A0 = {s.area:.4g} m^2, N = {self.N:.4g} summits"
+                   + (f", heights {self.heights.spec}" if self.heights is not GAUSSIAN and self.heights.spec else "")
                    + (f" [{s.source}]" if s.source else ""))
         if f["law"] == "Hurtado-Kim":
             constants = ", ".join(f"{k} = {f[k]:.4g}" for k in ("tau_f1", "tau_f2", "a1", "a2"))
@@ -472,7 +473,8 @@ class PhysicalContact(ContactPlasticity):
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
         plastic = curve.plastic  # the plastic law's column; the elastic law is only checked
         if plastic is None and self.u_c is not None:
-            check_yield(plastic_share(plastic_fraction(curve.d, self.u_c, self.heights), curve.contacts),
+            d_local = curve.d if curve.d_local is None else curve.d_local  # as the asperities feel it
+            check_yield(plastic_share(plastic_fraction(d_local, self.u_c, self.heights), curve.contacts),
                         threshold=self.plastic_threshold, psi=self.plasticity_index,
                         critical_interference=self.critical_interference, law=self.law, stacklevel=4)
         result = PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,

@@ -237,22 +237,35 @@ VALIDATION_COLUMNS = _registry(
             log=True),
     _column("area_detected_m2", "A_{GW}", "m^2", "statistical-model real contact area, detected summit parameters",
             log=True),
+    _column("area_icha_m2", "A_{ICHA}", "m^2", "interacting and coalescing Hertzian asperities (on the detected "
+            "summits): real contact area", log=True),
+    _column("area_persson_m2", "A_{P}", "m^2", "Persson's theory: real contact area erf(sqrt(2) p/E* h')",
+            log=True),
+    _column("area_bgt_m2", "A_{BGT}", "m^2", "Bush-Gibson-Thomas light-load asymptote: real contact area "
+            "sqrt(2 pi) p A0/E* h'", log=True),
     _column("dev_spectral", r"A_{GW}/A_{BEM}-1", "1", "deviation of the spectral model area from the BEM area"),
     _column("dev_detected", r"A_{GW}/A_{BEM}-1", "1", "deviation of the detected model area from the BEM area"),
+    _column("dev_icha", r"A_{ICHA}/A_{BEM}-1", "1", "deviation of the ICHA area from the BEM area"),
+    _column("dev_persson", r"A_{P}/A_{BEM}-1", "1", "deviation of Persson's area from the BEM area"),
+    _column("dev_bgt", r"A_{BGT}/A_{BEM}-1", "1", "deviation of the BGT asymptote from the BEM area"),
     _column("gap_bem_m", r"\bar g", "m", "boundary-element mean gap between the flat and the deformed surface"),
     _column("gap_spectral_m", r"\bar g", "m", "statistical-model mean gap (local separation + mean summit "
             "height), spectral"),
     _column("gap_detected_m", r"\bar g", "m", "statistical-model mean gap (local separation + mean summit "
             "height), detected"),
+    _column("gap_icha_m", r"\bar g", "m", "ICHA mean gap between the flat and the deformed surface"),
     _column("sep_bem_m", "s", "m", "approach: distance of the flat from the undeformed mean plane "
             "(non-periodic BEM only; NaN for periodic)"),
     _column("sep_spectral_m", "s", "m", "statistical-model distance of the flat from the undeformed mean plane, "
             "spectral"),
     _column("sep_detected_m", "s", "m", "statistical-model distance of the flat from the undeformed mean plane, "
             "detected"),
+    _column("sep_icha_m", "s", "m", "ICHA distance of the flat from the undeformed mean plane (non-periodic only; "
+            "NaN for periodic)"),
     _column("spots_bem", "n_{spots}", "1", "boundary-element number of contact spots (connected contact regions)"),
     _column("contacts_spectral", "n", "1", "statistical-model number of asperities in contact, spectral"),
     _column("contacts_detected", "n", "1", "statistical-model number of asperities in contact, detected"),
+    _column("spots_icha", "n_{spots}", "1", "ICHA contact spots (asperities in contact, a coalesced group once)"),
     _column("iterations_bem", "it", "1", "constrained conjugate-gradient iterations of the BEM solve"),
 )
 

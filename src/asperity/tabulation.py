@@ -20,6 +20,7 @@ import numpy as np
 
 from ._validation import as_float_array, check_bool, check_scalar_real, check_text
 from .asperity_law import U_END_LIMIT, ContactLaw, ModelParameters, check_law, check_parameters
+from .height_sums import HeightSums
 from .heights import GAUSSIAN, HeightDistribution
 from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
 
@@ -68,7 +69,9 @@ class Tabulation:
     d_min, d_max : float
         Range of separations :math:`d/\sigma` the nodes must serve, ``d_min <= d_max``.
     heights : HeightDistribution
-        Asperity height distribution (default Gaussian, Eq 19).
+        Asperity height distribution (default Gaussian, Eq 19).  One whose sums do not
+        factorise (``fast_sums`` False) is tabulated in the separation and interpolated by
+        :class:`asperity.height_sums.HeightSums`, to which :meth:`sums` then delegates.
     law : ContactLaw, optional
         Per-asperity law built for ``params`` (default: ``AsperityLaw(params)``, Hertz or
         Maugis-Dugdale with the friction law of ``params``).
@@ -102,12 +105,19 @@ class Tabulation:
                 raise ValueError(f"{n} (separation d/sigma) must lie in [{D_MIN:g}, {top:.6g}], got {x!r}")
         if not self.d_min <= self.d_max:
             raise ValueError(f"d_min must be <= d_max, got {self.d_min!r} and {self.d_max!r}")
+        # Heights whose sums do not factorise (all but the Gaussian and the wide mixtures) are
+        # tabulated in the separation and interpolated: asperity.height_sums.
+        self.height_sums = None
+        if not heights.fast_sums:
+            self.height_sums = hs = HeightSums(self.law, heights, self.d_min, self.d_max)
+            self.edges, self.u, self.a_bar, self.weights = hs.edges, hs.u, hs.a_bar, hs.weights
+            return
         law = self.law
         z_top = heights.z_top
         # For a separation d the integrand peaks at u* = max(u_end, -d) and is negligible
-        # (< phi(z_top) relative) beyond u* + z_top and below -d - z_top.
+        # (< phi(z_top) relative) beyond u* + z_top and below z_bottom - d.
         u_top = max(z_top - self.d_min, law.u_end + z_top)
-        u_bottom = -z_top - self.d_max
+        u_bottom = heights.z_bottom - self.d_max
         first = law.scale
         for bp in law.breakpoints:
             if bp > law.u_end:
@@ -149,8 +159,10 @@ class Tabulation:
         over the union of both ranges."""
         if self.covers(d_min, d_max):
             return self
-        return Tabulation(self.params, min(d_min, self.d_min), max(d_max, self.d_max), self.heights,
-                          law=self.law)
+        wider = Tabulation(self.params, min(d_min, self.d_min), max(d_max, self.d_max), self.heights, law=self.law)
+        if self.height_sums is not None:  # keep the separation panels already computed
+            wider.height_sums.inherit(self.height_sums)
+        return wider
 
     def sums(self, d, order=0):
         """``[S_0, .., S_order]``: the four integrals (columns) and their d-derivatives.
@@ -158,6 +170,8 @@ class Tabulation:
         Separations are sorted into blocks spanning at most a few sigma; each block sums
         only the nodes its height densities reach, so wide load ranges stay cheap.
         """
+        if self.height_sums is not None:
+            return self.height_sums.sums(d, order)
         d = np.asarray(d, dtype=float).ravel()
         out = [np.zeros((d.size, 4)) for _ in range(order + 1)]
         order_idx = np.argsort(d, kind="stable")
@@ -168,7 +182,7 @@ class Tabulation:
             j = int(np.searchsorted(ds, ds[i] + _BLOCK_SPAN, side="right"))
             j = min(j, i + _BLOCK_ROWS)
             block = ds[i:j]
-            lo, hi = -float(block[-1]) - z_top, max(self.law.u_end, -float(block[0])) + z_top
+            lo, hi = self.heights.z_bottom - float(block[-1]), max(self.law.u_end, -float(block[0])) + z_top
             for k, part in enumerate(self._block_sums(block, lo, hi, order)):
                 out[k][order_idx[i:j]] = part
             i = j

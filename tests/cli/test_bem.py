@@ -8,8 +8,8 @@ import pytest
 pytest.importorskip("ContactMechanics")
 pytest.importorskip("pint")
 
-from asperity.quantities import VALIDATION_COLUMNS  # noqa: E402
 from asperity.validation import validate_surface  # noqa: E402
+from asperity.validation.models import model_columns  # noqa: E402
 from asperity.validation.surfaces import synthetic_surface  # noqa: E402
 
 from .helpers import one_line_error, rows_of, run, strict_json  # noqa: E402
@@ -43,7 +43,7 @@ def test_csv_equals_api(capsys, scan, load, values):
     assert code == 0, err
     rows = rows_of(out)
     expected = api(scan, values).columns()
-    assert list(rows[0]) == list(VALIDATION_COLUMNS)
+    assert list(rows[0]) == list(model_columns("gw"))
     for name in ("P_N", "area_bem_m2", "area_spectral_m2", "gap_bem_m", "sep_bem_m", "spots_bem"):
         np.testing.assert_allclose([float(r[name]) for r in rows], expected[name], rtol=1e-12)
 
@@ -62,6 +62,23 @@ def test_json_grid_interaction_periodic_and_plot(capsys, scan, tmp_path):
     np.testing.assert_allclose(got["table"]["sep_spectral_m"], expected.columns()["sep_spectral_m"], rtol=1e-12)
     assert got["table"]["sep_bem_m"] == [None, None]
     assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.parametrize("models", ["icha,persson,bgt", "gw,icha", "persson"])
+def test_models_csv_and_json_equal_api(capsys, scan, models):
+    code, out, err = run(capsys, "bem", str(scan), *ARGS, "--load", "1mN,4mN", "--model", models, "--format", "csv")
+    assert code == 0, err
+    rows = rows_of(out)
+    expected = api(scan, [1e-3, 4e-3], models=models)
+    assert list(rows[0]) == list(expected.columns()) == list(model_columns(models))
+    for name, values in expected.columns().items():
+        got = np.array([float(r[name]) for r in rows])
+        np.testing.assert_allclose(got, values, rtol=1e-12, equal_nan=True, err_msg=name)
+    code, out, err = run(capsys, "bem", str(scan), *ARGS, "--load", "1mN,4mN", "--model", models, "--format", "json")
+    got = strict_json(out)
+    assert got["models"] == models.split(",")
+    assert set(got["costs"]["ratios"]) == set(expected.cost_ratios)
+    assert set(got["max_deviation_up_to_20pc"]) == set(expected.methods)
 
 
 def test_table_and_progress(capsys, scan):
@@ -85,6 +102,9 @@ def test_table_and_progress(capsys, scan):
     (["--load", "1mN,,2mN"], "empty item"),
     (["--load", "1mN", "--grid", "8"], "grid"),
     (["--load", "1mN", "--interaction", "bogus"], "interaction"),
+    (["--load", "1mN", "--model", "bogus"], "models"),
+    (["--load", "1mN", "--model", ","], "models"),
+    (["--load", "1mN", "--model", "icha", "--interaction", "cgp2008"], "include 'gw'"),
     (["--load", "1mN", "--material", "Unobtainium"], "Unobtainium"),
 ])
 def test_bad_input_one_line(capsys, scan, extra, needle):

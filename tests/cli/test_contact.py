@@ -270,3 +270,15 @@ def test_a_bad_scan_is_one_line(capsys, tmp_path):
     code, _, err = run(capsys, "load", "--surface", str(tmp_path), "--material", "Au", "--area", "1mm^2",
                        "--load", "1mN")
     assert one_line_error(code, err, str(tmp_path))
+
+
+@pytest.mark.parametrize("command", ["load", "separation", "pulloff", "cycle", "fit"])
+def test_heights_reach_every_physical_command(command):
+    """--heights is in every command with a physical contact (fit's gw model too), and the contact gets it."""
+    from asperity.cli import build_parser
+    from asperity.cli._args import contact_from_args
+
+    data = ["data.csv"] if command == "fit" else []
+    args = build_parser().parse_args([command, *data, *AU_NEW, "--heights", "weibull:skew=0.5"])
+    assert contact_from_args(args).heights.spec == "weibull:skew=0.5"
+    assert PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6)).heights.spec == "gaussian"  # without it

@@ -51,6 +51,8 @@ def same(cli_text, result):
     (["--model", "amontons", "--start", "P0=0.5,mu0=0.2", "--bounds", "P0=:3,mu0=0.01:"],
      {"model": "amontons", "start": {"P0": 0.5, "mu0": 0.2}, "bounds": {"P0": (None, 3.0), "mu0": (0.01, None)}}),
     (["--model", "cos", "--weights", "none", "--ci", "wald"], {"model": "cos", "weights": "none", "ci": "wald"}),
+    (["--model", "cos", "--restarts", "always", "--ci", "wald"], {"model": "cos", "restarts": "always", "ci": "wald"}),
+    (["--model", "amontons", "--restarts", "never"], {"model": "amontons", "restarts": "never"}),
     (["--model", "amontons", "--loss", "huber", "--weights", "relative"],
      {"model": "amontons", "loss": "huber", "weights": "relative"}),
     (["--model", "gw", "--vary", "gamma", "--fix", "alpha=0.01,beta=100", "--ci", "wald"],

@@ -62,6 +62,8 @@ def _files(tmp: str) -> dict[str, str]:
     friction = os.path.join(tmp, "friction.csv")  # friction F against load P (dimensionless)
     with open(friction, "w") as fh:
         fh.write("P,F\n" + "".join(f"{p},{0.3 * (p + 1.0)}\n" for p in np.linspace(0.5, 5.0, 8).tolist()))
+    summits = os.path.join(tmp, "summits.txt")  # measured summit heights in metres, one per line
+    np.savetxt(summits, 2e-9 * np.random.default_rng(3).standard_normal(300) ** 2)
     sets = os.path.join(tmp, "sets.csv")
     with open(sets, "w") as fh:
         fh.write("alpha,beta,gamma\n0.01,1000,0.001\n0.003,1000,0\n")
@@ -71,7 +73,7 @@ def _files(tmp: str) -> dict[str, str]:
     sweep(alpha=[0.003, 0.01], beta=1000.0, gamma=[0.0, 1e-3], P=[1.0, 10.0], scheduler="serial",
           out=store).close()
     return {"scan": scan, "dir": tmp, "empty": empty, "missing": os.path.join(tmp, "missing.npy"),
-            "out": os.path.join(tmp, "out.txt"), "friction": friction, "sets": sets, "store": store}
+            "out": os.path.join(tmp, "out.txt"), "friction": friction, "sets": sets, "store": store, "summits": summits}
 
 
 def valid_values(tmp: str) -> dict[str, list[str]]:
@@ -107,6 +109,10 @@ def valid_values(tmp: str) -> dict[str, list[str]]:
         "out": [os.path.join(tmp, "sweep.nc")], "resume": [None], "scheduler": ["serial"],
         "chunk_sets": ["1", "64"], "progress": [None], "store": [f["store"]], "x": ["alpha", "gamma"],
         "y": ["gamma", "alpha"], "z": ["pull_off", "mu"], "at": ["P=10", "P=1"],
+        # summit heights (every model and physical command), fit restarts, surface summits
+        "heights": ["gaussian", "weibull:skew=0.5", "exponential", f"empirical:{f['summits']}",
+                    f"best:{f['summits']}"],
+        "restarts": ["auto", "never"], "summits": [os.path.join(tmp, "summits_out.txt")],
         # explore (served and stopped at once: _no_serving)
         "port": ["0"], "host": ["127.0.0.1"], "no_browser": [None],
     }
@@ -118,7 +124,7 @@ def command_values(tmp: str) -> dict[str, dict[str, list[str]]]:
     return {"sweep": {"points": [f["sets"]], "material": ["Au", "Au,Si"], "sigma_s": ["2nm", "1nm,2nm"],
                       "alpha": ["0.01", "0.003,0.01"], "gamma": ["1e-3", "0,1e-3"]},
             "fit": {"format": ["json", "table"]},
-            "bem": {"load": ["1mN,10mN", "1mN:10mN:3"]},
+            "bem": {"load": ["1mN,10mN", "1mN:10mN:3"], "model": ["gw", "gw,persson,bgt", "icha"]},
             "plot": {"output": [os.path.join(tmp, "map.png")]}}
 
 

@@ -110,7 +110,12 @@ def test_query_string_round_trip(values):
 def test_every_field_and_the_mode_are_in_the_query():
     s = default_state().replace(material=CUSTOM, mode="physical")
     keys = [pair.split("=")[0] for pair in s.to_query().split("&")]
-    assert keys == list(fields())
+    # a distribution's parameters only with it chosen
+    assert keys == [k for k, f in fields().items() if f.group in (None, s["heights"])]
+    chosen = s.replace(heights="johnson")
+    keys = [pair.split("=")[0] for pair in chosen.to_query().split("&")]
+    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson")]
+    assert "johnson_kurt" in keys and "weibull_skew" not in keys
 
 
 def test_tornado_arguments_are_read():

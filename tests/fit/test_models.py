@@ -118,3 +118,25 @@ def test_data_driven_starts():
     assert cos["Pc_N"] < P.min() and cos["F0_N"] > 0
     F = cos_friction(P, F0=1e-9, Pc=2 * P.min(), alpha_t=0.5)
     assert F.shape == P.shape
+
+
+@pytest.mark.filterwarnings("ignore::asperity.PlasticityWarning")
+@pytest.mark.parametrize("kwargs", [{"adhesion": False, "plasticity": "jackson-green"},
+                                    {"adhesion": False, "interaction": "cgp2008"},
+                                    {"adhesion": False, "plasticity": "jackson-green", "h_star": 1e-6,
+                                     "hardness": 188e6},
+                                    {"heights": "weibull:skew=0.5"}])
+def test_gw_fit_model_keeps_every_setting_of_the_contact(kwargs):
+    """At the contact's own values the fit model's friction is the contact's: nothing is dropped."""
+    from asperity.heights import parse_heights
+    from asperity.physical import PhysicalContact, Surface
+
+    if "heights" in kwargs:
+        kwargs = {"heights": parse_heights(kwargs["heights"])}
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), **kwargs)
+    model = get_model("gw", contact=contact)
+    P = np.geomspace(1e-4, 1e-1, 5)
+    values = {k: s.value for k, s in model.specs(friction_load_data(P, np.ones(5), physical=True)).items()}
+    F, clamped = model.friction(P, values)
+    np.testing.assert_allclose(F, contact.load_curve(P).F, rtol=1e-12)
+    assert not clamped

@@ -56,6 +56,7 @@ def test_expression_between_log_scaled_parameters():
     ({"weights": "squared"}, "weights must be one of"),
     ({"loss": "cauchy"}, "loss must be one of"),
     ({"ci": "bootstrap"}, "ci must be one of"),
+    ({"restarts": "sometimes"}, "restarts must be one of auto, always, never"),
 ])
 def test_refused_options(kwargs, match):
     with pytest.raises(ValueError, match=match):

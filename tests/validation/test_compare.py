@@ -9,9 +9,9 @@ pytest.importorskip("ContactMechanics")
 
 from asperity.materials import material  # noqa: E402
 from asperity.physical import PhysicalContact  # noqa: E402
-from asperity.quantities import VALIDATION_COLUMNS  # noqa: E402
 from asperity.topography import analyse_surface  # noqa: E402
 from asperity.validation import SurfaceValidation, bem_contact, validate_surface  # noqa: E402
+from asperity.validation.models import model_columns  # noqa: E402
 from asperity.validation.progress import progress_bar  # noqa: E402
 from asperity.validation.surfaces import synthetic_surface  # noqa: E402
 
@@ -38,7 +38,7 @@ def seeds():
 def test_table_is_the_two_solutions(seeds):
     r = seeds[0]
     t = r.columns()
-    assert list(t) == list(VALIDATION_COLUMNS)
+    assert list(t) == list(model_columns("gw"))
     topo = synthetic_surface("gaussian", SIZE, 64, short_cutoff=SIZE / 16, seed=0)
     bem = bem_contact(topo, t["P_N"], E_star=AU.E_star)
     np.testing.assert_array_equal(t["area_bem_m2"], bem.area)
@@ -78,7 +78,7 @@ def test_outputs(seeds, tmp_path):
     assert d["table"]["sep_bem_m"] == [None, None]  # periodic: NaN -> null
     assert d["costs"]["ratio"] == pytest.approx(r.cost_ratio) and r.cost_ratio > 0
     assert d["summits"]["spectral"]["eta"] == pytest.approx(r.analysis.spectral.eta)
-    assert r.to_csv().splitlines()[0] == ",".join(VALIDATION_COLUMNS)
+    assert r.to_csv().splitlines()[0] == ",".join(model_columns("gw"))
     pd = pytest.importorskip("pandas")
     frame = r.to_dataframe()
     assert isinstance(frame, pd.DataFrame) and frame.attrs["units"]["P_N"] == "N"

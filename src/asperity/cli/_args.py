@@ -5,7 +5,9 @@
   (a physical contact: the bodies, the rough surface, the friction law),
   :func:`add_plasticity_arguments` (the per-asperity law: ``--law``, ``--hardness``,
   ``--h-star``, ``--size-effect``, ``--plastic-threshold``; added by both groups before,
-  once), :func:`add_surface_arguments` (a scan file for ``surface`` and ``bem``) and
+  once), :func:`add_heights_argument` (the summit-height distribution ``--heights``, spelt
+  as :data:`HEIGHTS_HELP` lists and read by :func:`asperity.heights.parse_heights`; added by
+  both groups too, once), :func:`add_surface_arguments` (a scan file for ``surface`` and ``bem``) and
   :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``).
 * What builds the library's objects from them: :func:`is_physical`,
   :func:`model_from_args`, :func:`contact_from_args` (with :func:`surface_from_args`,
@@ -69,6 +71,9 @@ __all__ = [
     "MODEL_HELP",
     "MATERIAL_FORMS",
     "CONTACT_OPTIONS",
+    "HEIGHTS_HELP",
+    "heights_from_args",
+    "add_heights_argument",
 ]
 
 #: Output columns and units, for the epilog of ``--help`` (from :data:`asperity.quantities.CURVE_COLUMNS`).
@@ -83,6 +88,14 @@ UNITS = ("\n".join(f"  {name:9s} {q.meaning}" for name, q in CURVE_COLUMNS.items
            "the\nper-asperity law with the hardness and plasticity index, the interaction); "
            "read the CSV\nwith pandas.read_csv(path, comment='#'), or drop them with --no-comments. "
            "JSON: one object\n{\"contact\": {...}, \"rows\": [...]}.")
+
+#: ``--help`` text of ``--heights``: the spellings of :data:`asperity.heights.SPELLINGS` (a test
+#: checks they agree; the registry itself would load SciPy before ``--help`` is answered).
+HEIGHTS_HELP = ("summit-height distribution, standardised to mean 0 and deviation sigma_s: gaussian (default, "
+                "Eq 19), exponential, weibull:skew=S (-1..2), pearson3:skew=S (-2..2), johnson:skew=S,kurt=K, "
+                "mixture:w=W,m1=M1,s1=S1,m2=M2,s2=S2 (two Gaussians, any unit), empirical:FILE (a one-column "
+                "file of measured summit heights, any unit), best:FILE (the best-ranked fit to them; see "
+                "'asperity surface --summits')")
 
 #: Names of the per-asperity laws, as :data:`asperity.elastic_plastic.LAWS` lists them (that
 #: module loads SciPy, which ``--help`` must not; a test keeps the two equal).
@@ -135,7 +148,20 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
     g.add_argument("--nu", type=float, default=None, help=_NU_HELP)
     g.add_argument("--h-over-b", dest="h_over_b", type=float, default=None, help=MODEL_HELP["h_over_b"])
+    add_heights_argument(parser, g)
     add_plasticity_arguments(parser)
+
+
+def add_heights_argument(parser: argparse.ArgumentParser, group=None) -> None:
+    """``--heights SPEC``, the summit-height distribution (in ``group``, else a group of its own).
+
+    Both :func:`add_model_arguments` and :func:`add_contact_arguments` add it; the second
+    call leaves the parser as it is.
+    """
+    if any("--heights" in action.option_strings for action in parser._actions):
+        return  # added by the other group already
+    group = group if group is not None else parser.add_argument_group("summit heights (docs/heights.md)")
+    group.add_argument("--heights", metavar="SPEC", default=None, help=HEIGHTS_HELP)
 
 
 def add_plasticity_arguments(parser: argparse.ArgumentParser) -> None:
@@ -227,6 +253,7 @@ def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
                         help="a physical result starts with '#' lines stating the contact computed (read the CSV "
                              "with pandas.read_csv(path, comment='#')); this leaves them out. JSON output is "
                              "{\"contact\": {...}, \"rows\": [...]} either way")
+    add_heights_argument(parser)
     add_plasticity_arguments(parser)
 
 
@@ -321,6 +348,15 @@ def is_physical(args) -> bool:
     return False
 
 
+def heights_from_args(args):
+    """The height distribution of ``--heights`` (the Gaussian without it), read by
+    :func:`asperity.heights.parse_heights`."""
+    from ..heights import GAUSSIAN, parse_heights
+
+    spec = getattr(args, "heights", None)
+    return GAUSSIAN if spec is None else parse_heights(spec)
+
+
 def _number(text, name: str):
     """A dimensionless option's text as a float (None stays None)."""
     if text is None:
@@ -349,7 +385,8 @@ def model_from_args(args):
     h_over_b = 1.0 if args.h_over_b is None else args.h_over_b
     friction = friction_from_args(args, physical=False)
     kwargs = {} if friction is None else {"friction": friction}
-    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=h_over_b, law=law, **kwargs)
+    return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=h_over_b, law=law,
+                 heights=heights_from_args(args), **kwargs)
 
 
 def friction_from_args(args, *, physical: bool):
@@ -457,13 +494,15 @@ def contact_from_args(args):
                            friction=friction_from_args(args, physical=True), adhesion=not args.no_adhesion,
                            plasticity=args.law, hardness=optional_quantity(args.hardness, "Pa", "--hardness"),
                            h_star=optional_quantity(args.h_star, "m", "--h-star"),
-                           size_effect=True if args.size_effect else None, **kwargs)
+                           size_effect=True if args.size_effect else None, heights=heights_from_args(args),
+                           **kwargs)
 
 
 def title(args, contact=None) -> str:
     """One line naming the contact (its first description line, and a plastic law) or the model
     parameters (plot titles)."""
     law = "" if getattr(args, "law", None) in (None, "elastic") else f", {args.law}"
+    law += f", heights {args.heights}" if getattr(args, "heights", None) else ""
     if contact is not None:
         return contact.describe().splitlines()[0].removeprefix("contact: ") + law
     return (f"alpha={args.alpha:g}, beta={args.beta:g}, gamma={args.gamma or 0:g}, "

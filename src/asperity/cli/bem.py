@@ -7,19 +7,22 @@ import argparse
 from ._args import add_body_arguments, add_output_arguments, add_surface_arguments
 
 NAME = "bem"
-HELP = "check the GW model against a boundary-element contact of a surface"
+HELP = "check the GW and other models against a boundary-element contact of a surface"
 DESCRIPTION = ("Solve the full elastic (hard-wall, non-adhesive) contact of a measured surface pressed on a "
-               "half-space with boundary elements (ContactMechanics), and put the Greenwood-Williamson model "
-               "beside it for the same surface (summit parameters spectral and detected), material and loads: "
-               "real area, mean gap, contact spots, and the deviation. Loads are total forces on the scanned "
-               "area. Needs asperity[bem].")
+               "half-space with boundary elements (ContactMechanics), and put the models beside it for the same "
+               "surface, material and loads: Greenwood-Williamson (summit parameters spectral and detected), and "
+               "with --model the interacting and coalescing Hertzian asperities on the surface's own summits "
+               "(icha), Persson's area (persson) and the Bush-Gibson-Thomas light-load asymptote (bgt): real "
+               "area, mean gap, contact spots, and the deviation. Loads are total forces on the scanned area. "
+               "Needs asperity[bem].")
 EPILOG = ("Columns (SI units): P_N load, p_Pa nominal pressure, fraction_bem real/nominal area, area_*_m2 real "
-          "areas, dev_* = A_GW/A_BEM - 1, gap_*_m mean gaps, sep_*_m approach (non-periodic BEM only), spots_bem "
-          "contact spots, contacts_* asperities in contact, iterations_bem.\n"
-          "The table and CSV start with '#' lines describing the model's contact for each summit method "
+          "areas, dev_* = A_model/A_BEM - 1, gap_*_m mean gaps, sep_*_m approach (non-periodic only), spots_bem "
+          "contact spots, contacts_* GW asperities in contact, spots_icha ICHA contact spots, iterations_bem.\n"
+          "The table and CSV start with '#' lines describing the GW model's contact for each summit method "
           "(--no-comments: none); JSON holds them as \"contacts\". The comparison is elastic and non-adhesive "
           "(the boundary-element solution is), so the adhesion and plasticity options do not apply.\n"
-          "Example: asperity bem scan.npy --size 4um,4um --unit nm --material Au --load 1mN:100mN:8 --grid 256")
+          "Example: asperity bem scan.npy --size 4um,4um --unit nm --material Au --load 1mN:100mN:8 --grid 256 "
+          "--model gw,icha,persson")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -33,7 +36,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--periodic", action=argparse.BooleanOptionalAction, default=None,
                         help="periodic or free boundaries (default: as the file says; measured scans are free)")
     parser.add_argument("--interaction", default="none",
-                        help="asperity-interaction correction of the model: none (plain GW) or cgp2008")
+                        help="asperity-interaction correction of the GW model: none (plain GW) or cgp2008")
+    parser.add_argument("--model", default="gw", metavar="LIST",
+                        help="models beside the boundary elements, comma-separated: gw (default), icha, persson, "
+                             "bgt")
     parser.add_argument("--quiet", action="store_true", help="no progress report on standard error")
     parser.add_argument("--no-comments", action="store_true",
                         help="leave out the '#' lines describing the model's contacts")
@@ -52,7 +58,8 @@ def run(args) -> None:
 
     loads = quantity_list(args.load, "N", log=True, name="--load")
     result = validate_surface(args.file, loads, material=material_from_args(args), grid=args.grid,
-                              periodic=args.periodic, interaction=args.interaction, progress=not args.quiet,
+                              periodic=args.periodic, interaction=args.interaction, models=args.model,
+                              progress=not args.quiet,
                               **read_kwargs_from_args(args))
     fmt = output_format(args)
     if fmt == "json":
@@ -64,5 +71,5 @@ def run(args) -> None:
             if not args.no_comments else ""
         text = header + format_rows([{k: v[i] for k, v in cols.items()} for i in range(len(result))], fmt)
     write_outputs(text, args, plot=lambda path, image: result.plot(path, image))
-    for message in result.analysis.warnings:  # notes, as every command prints the scan's doubts
+    for message in result.parameters["warnings"]:  # notes, as every command prints the scan's doubts
         warnings.warn(f"surface {args.file}: {message}", SurfaceNote, stacklevel=1)

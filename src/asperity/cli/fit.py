@@ -82,6 +82,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     f.add_argument("--ci", choices=("auto", "wald", "profile"), default="auto",
                    help="95%% intervals: profile likelihood where the covariance is unreliable (auto), always, "
                         "or never (wald)")
+    f.add_argument("--restarts", choices=("auto", "always", "never"), default="auto",
+                   help="repeat the fit from starts a decade away when it looks stuck in a local minimum "
+                        "(auto: points out of the model's reach, not converged, or an improbable chi-square), "
+                        "for every fit (always), or never")
     d = parser.add_argument_group("data")
     d.add_argument("--kind", choices=("friction", "force", "pull_off"), help="the data kind (default: from the "
                                                                              "columns)")
@@ -156,7 +160,8 @@ def _options(args):
         R = quantity(args.R, "m", "--R")
         (start if vary is not None and "R_m" in vary else fix).setdefault("R_m", R)
     return {"vary": vary, "fix": fix, "start": start, "bounds": _bounds(args.bounds), "contact": contact,
-            "material": material, "weights": args.weights, "loss": args.loss, "ci": args.ci}
+            "material": material, "weights": args.weights, "loss": args.loss, "ci": args.ci,
+            "restarts": args.restarts}
 
 
 def run(args) -> None:

@@ -10,13 +10,19 @@ NAME = "surface"
 HELP = "GW summit parameters of a measured surface (AFM map, profile)"
 DESCRIPTION = ("Read a height map or line scan (any format SurfaceTopography reads) and compute the summit "
                "parameters sigma_s, R, eta two ways: from the spectral moments m0, m2, m4 (Nayak/McCool) and "
-               "by summit detection. With --material, also alpha and beta (Eq 7). Needs asperity[topography].")
+               "by summit detection. With --material, also alpha and beta (Eq 7). Reports the skewness and "
+               "kurtosis of the detected summit heights and ranks the height distributions fitted to them by "
+               "AIC; pass the best one's spelling to --heights of the other commands, or write the summits "
+               "with --summits FILE and use --heights best:FILE or empirical:FILE. Needs asperity[topography].")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_surface_arguments(parser)
     parser.add_argument("--material", help="material name for alpha, beta (its Burgers vector b)")
     parser.add_argument("--b", help="Burgers vector, a length (e.g. 0.2885nm), instead of --material")
+    parser.add_argument("--summits", metavar="FILE", type=output_file,
+                        help="also write the detected summit heights (metres, one per line) to FILE, for "
+                             "--heights empirical:FILE or best:FILE")
     parser.add_argument("--format", choices=("table", "json"), default=None,
                         help="output format (default: a readable summary on a terminal, JSON otherwise)")
     parser.add_argument("-o", "--output", metavar="FILE", type=output_file,
@@ -41,6 +47,8 @@ def run(args) -> None:
 
         mat = material(args.material)
     result = analyse_surface(args.file, material=mat, b=b, **kwargs)
+    if args.summits:
+        result.write_summits(args.summits)
     fmt = output_format(args, piped="json")
     text = result.summary() + "\n" if fmt == "table" else format_json(result.to_dict(), indent=1)
     write_outputs(text, args)

@@ -106,7 +106,21 @@ def distributions() -> dict:
     from .. import heights
 
     registry = getattr(heights, "DISTRIBUTIONS", None)
-    return dict(registry) if registry else {"gaussian": heights.Gaussian}
+    if not registry:
+        return {"gaussian": heights.Gaussian}
+    # a distribution built from data (the empirical one: measured summit heights) has no place in a menu
+    return {name: entry for name, entry in registry.items() if _buildable(entry)}
+
+
+def _buildable(entry) -> bool:
+    """True if ``entry`` is an instance, or a class that builds with its defaults (not from data)."""
+    if not isinstance(entry, type):
+        return True
+    try:
+        entry()
+    except (TypeError, ValueError):
+        return False
+    return True
 
 
 def _distribution_fields(name: str, entry) -> list[Field]:

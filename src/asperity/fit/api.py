@@ -51,7 +51,7 @@ __all__ = ["fit_friction_load", "fit_force_separation", "fit_pull_off"]
 
 def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, bounds=None, expr=None, contact=None,
                       material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-                      grid=200) -> FitResult:
+                      grid=200, restarts="auto") -> FitResult:
     r"""Fit a model to friction force (or coefficient) against normal load.
 
     .. math::
@@ -86,6 +86,9 @@ def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, boun
         Drop rows holding NaN when reading a file (counted in the warnings).
     grid : int
         Points of the fitted curve.
+    restarts : {'auto', 'always', 'never'}
+        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        (:func:`asperity.fit.runner.run`).
 
     Returns
     -------
@@ -115,12 +118,12 @@ def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, boun
     """
     data = as_dataset(data, "friction", units, drop_nan)
     return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
-                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid)
+                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts)
 
 
 def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, bounds=None, expr=None, contact=None,
                          material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-                         grid=200) -> FitResult:
+                         grid=200, restarts="auto") -> FitResult:
     r"""Fit a model to normal force against separation.
 
     .. math::
@@ -155,6 +158,9 @@ def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, b
         Drop rows holding NaN when reading a file.
     grid : int
         Points of the fitted curve.
+    restarts : {'auto', 'always', 'never'}
+        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        (:func:`asperity.fit.runner.run`).
 
     Returns
     -------
@@ -182,11 +188,12 @@ def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, b
     """
     data = as_dataset(data, "force", units, drop_nan)
     return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
-                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid)
+                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts)
 
 
 def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=None, expr=None, contact=None,
-                 material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False) -> FitResult:
+                 material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
+                 restarts="auto") -> FitResult:
     r"""Fit a model to pull-off forces, one per surface or condition.
 
     .. math::
@@ -218,6 +225,9 @@ def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=No
         Units of columns without one, when reading a file.
     drop_nan : bool
         Drop rows holding NaN when reading a file.
+    restarts : {'auto', 'always', 'never'}
+        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        (:func:`asperity.fit.runner.run`).
 
     Returns
     -------
@@ -244,4 +254,4 @@ def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=No
     """
     data = as_dataset(data, "pull_off", units, drop_nan)
     return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
-                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci)
+                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, restarts=restarts)

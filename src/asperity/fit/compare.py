@@ -18,7 +18,7 @@ __all__ = ["compare_models"]
 
 def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind=None, vary=None, fix=None,
                    start=None, bounds=None, contact=None, material=None, weights="auto", loss="linear", ci="auto",
-                   units=None, drop_nan=False, grid=200) -> Comparison:
+                   units=None, drop_nan=False, grid=200, restarts="auto") -> Comparison:
     r"""Fit several models to the same data and rank them by AIC.
 
     .. math::
@@ -57,6 +57,9 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
         Drop rows holding NaN when reading a file.
     grid : int
         Points of each fitted curve.
+    restarts : {'auto', 'always', 'never'}
+        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        (:func:`asperity.fit.runner.run`).
 
     Returns
     -------
@@ -103,7 +106,8 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
         mine = {k: _restrict(v, own) for k, v in options.items()}
         if not mine["vary"]:
             mine["vary"] = None
-        results.append(fit_problem([data], [m], weights=weights, loss=loss, ci=ci, grid=grid, **mine))
+        results.append(fit_problem([data], [m], weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts,
+                                   **mine))
     ranked = sorted(results, key=lambda r: (not r.success, r.aic if r.aic == r.aic else float("inf")))
     return Comparison(tuple(ranked))
 

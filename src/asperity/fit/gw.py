@@ -124,8 +124,9 @@ class GWFit(FitModel):
             material = replace(c.material, w=v["w_J_m2"], b=v["b_m"], h=None, sigma0=None)
             surface = Surface(v["sigma_s_m"], v["R_m"], v["eta_per_m2"], v["area_m2"])
             friction = HurtadoKim(v["tau1_Pa"] / G_star, v["tau2_Pa"] / G_star, v["a1"], v["a2"])
-            contact = PhysicalContact(material, surface, h=v["h_m"], friction=friction, heights=c.heights,
-                                      **_law_of(c))
+            # everything else as the given contact: adhesion, heights, plasticity, interaction
+            contact = PhysicalContact(material, surface, h=v["h_m"], friction=friction, adhesion=c.adhesion,
+                                      heights=c.heights, **_law_of(c))
             built = (contact.model, contact.force_scale, surface.sigma_s, contact)
         self._cache[key] = built
         if len(self._cache) > _CACHE_SIZE:

@@ -20,7 +20,7 @@ __all__ = ["fit_joint"]
 
 def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
               contact=None, material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-              grid=200) -> FitResult:
+              grid=200, restarts="auto") -> FitResult:
     r"""Fit several data sets at once, sharing named parameters.
 
     .. math::
@@ -56,6 +56,9 @@ def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=
         Drop rows holding NaN when reading files.
     grid : int
         Points of each fitted curve.
+    restarts : {'auto', 'always', 'never'}
+        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        (:func:`asperity.fit.runner.run`).
 
     Returns
     -------
@@ -93,4 +96,4 @@ def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=
         raise ValueError(f"give one model (and contact) for all {n} data sets or one per data set")
     built = [get_model(m, material=material, contact=c) for m, c in zip(models, contacts, strict=True)]
     return fit_problem(datasets, built, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds, expr=expr,
-                weights=weights, loss=loss, ci=ci, grid=grid)
+                weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts)

@@ -29,7 +29,7 @@ from .uncertainty import (
     wald_reliable,
 )
 
-__all__ = ["CI_METHODS", "run", "fit_problem", "grid_for"]
+__all__ = ["CI_METHODS", "RESTARTS", "run", "fit_problem", "grid_for", "suspicious", "restart_points"]
 
 #: Interval methods.
 CI_METHODS = ("auto", "wald", "profile")
@@ -55,38 +55,116 @@ class _Counted:
         return self.fn(params)
 
 
-def run(problem: Problem, *, ci: str = "auto", grid: int = 200) -> FitResult:
-    """Fit ``problem`` and analyse the result (see the module docstring)."""
+def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = "auto") -> FitResult:
+    """Fit ``problem`` and analyse the result (see the module docstring).
+
+    ``restarts`` (``'auto'``, ``'always'``, ``'never'``): the local minimiser can stop in a
+    local minimum of a nonlinear model (the rough-surface model's friction has plateaus
+    where data points fall below the model's pull-off load).  With ``'auto'`` a fit that
+    looks wrong (:func:`suspicious`) is repeated from the starts of
+    :func:`restart_points` and the lowest chi-square kept; ``'always'`` does so for every
+    fit.  A restart that wins is reported among the warnings.
+    """
     if ci not in CI_METHODS:
         raise ValueError(f"ci must be one of {', '.join(CI_METHODS)}, got {ci!r}")
+    if restarts not in RESTARTS:
+        raise ValueError(f"restarts must be one of {', '.join(RESTARTS)}, got {restarts!r}")
     lmfit = require("lmfit", purpose="fitting", extra="fit")
     absolute = all(w == "column" for w in problem.weights)
     objective = _Counted(problem.residual)
     minimizer = lmfit.Minimizer(objective, problem.lmfit_parameters(), scale_covar=not absolute)
     n_free = len(problem.free)
     kws = {"x_scale": "jac", "ftol": 1e-12, "xtol": 1e-12, "gtol": 1e-12, "max_nfev": 200 * (n_free + 1)}
+    restart_note = None
     # lmfit divides by zero standard errors of degenerate fits (handled in _analyse): no warnings.
     # The library's validity warnings at the trial points say nothing about the fit: the
     # ones that hold at the best fit are collected by _result.
     with np.errstate(all="ignore"), pywarnings.catch_warnings():
         pywarnings.simplefilter("ignore", AsperityWarning)
-        result = minimizer.least_squares(**kws)
+        start = minimizer.params.copy()
+        result = minimizer.least_squares(params=start.copy(), **kws)
+        if restarts == "always" or (restarts == "auto" and suspicious(problem, result, absolute)):
+            first = result
+            for alternative in restart_points(start):
+                trial = minimizer.least_squares(params=alternative, **kws)
+                if not trial.aborted and math.isfinite(trial.chisqr) and (
+                        result.aborted or trial.chisqr < result.chisqr * (1.0 - 1e-9)):
+                    result = trial
+            if result is not first:
+                restart_note = (f"the fit from the given start stopped at chi-square {first.chisqr:.6g}; a restart "
+                                f"from a start a decade away reached {result.chisqr:.6g} (kept): the start matters "
+                                "for these data, give one near the answer if you know it")
         if problem.loss != "linear" and not result.aborted:
             mad = float(np.median(np.abs(result.residual)))
             result = minimizer.least_squares(params=result.params, loss=problem.loss,
                                              f_scale=1.4826 * mad or 1.0, **kws)
         nfev = objective.calls
         analysis = _analyse(problem, minimizer, result, absolute, ci)
+    if restart_note:
+        analysis["warnings"].insert(0, restart_note)
     objective_profile = objective.calls - nfev
     return _result(problem, result, analysis, nfev, objective_profile, lmfit, grid)
 
 
+#: Restart choices of :func:`run`.
+RESTARTS = ("auto", "always", "never")
+#: A restart moves one log-scaled parameter by this many decades (both ways).
+RESTART_DECADES = 1.0
+
+
+def suspicious(problem, result, absolute) -> bool:
+    """True if a finished local fit looks like a local minimum worth restarting from elsewhere.
+
+    A fit is suspicious if it did not converge, if a term has data points the model cannot
+    reach at the fitted parameters (clamped: loads below its pull-off, separations past its
+    branch), or, with stated uncertainties (``absolute``), if the chi-square is improbable
+    (p < 1e-3).  Without uncertainties the quality cannot be judged and only the first two
+    apply.
+    """
+    if result.aborted or not result.success or not math.isfinite(result.chisqr):
+        return True
+    values = problem.values(result.params)
+    for term in problem.terms:
+        try:
+            if term.predict(term.local(values))[1]:
+                return True
+        except ValueError:
+            return True
+    return bool(absolute and result.nfree > 0 and stats.chi2.sf(result.chisqr, result.nfree) < 1e-3)
+
+
+def restart_points(params):
+    """The starts of a restart: each free log-scaled parameter moved by +-:data:`RESTART_DECADES` in turn.
+
+    Parameters
+    ----------
+    params : lmfit.Parameters
+        The original start (log-scaled parameters fitted as ``log10_<name>``).
+
+    Returns
+    -------
+    list of lmfit.Parameters
+        ``2 n`` copies for ``n`` free log-scaled parameters (moves outside a bound are left out);
+        linear parameters keep their start.
+    """
+    out = []
+    for name, p in params.items():
+        if not (p.vary and p.expr is None and name.startswith("log10_")):
+            continue
+        for step in (RESTART_DECADES, -RESTART_DECADES):
+            if p.min <= p.value + step <= p.max:
+                trial = params.copy()
+                trial[name].value = p.value + step
+                out.append(trial)
+    return out
+
+
 def fit_problem(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
-                weights="auto", loss="linear", ci="auto", grid=200) -> FitResult:
+                weights="auto", loss="linear", ci="auto", grid=200, restarts="auto") -> FitResult:
     """Build the problem of ``datasets`` and ``models`` (:func:`~asperity.fit.engine.build_problem`); fit it."""
     problem = build_problem(datasets, models, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds,
                             expr=expr, weights=weights, loss=loss)
-    return run(problem, ci=ci, grid=grid)
+    return run(problem, ci=ci, grid=grid, restarts=restarts)
 
 
 def _analyse(problem, minimizer, result, absolute, ci):

@@ -177,8 +177,44 @@ def _quantity(name, loc, a, P):
     raise KeyError(name)
 
 
-def _integrate(d, p, names):
+def _integrate_density(d, p, names, dens):
+    """The integrals for a non-Gaussian height density ``dens`` (a RefDensity of .heights):
+    the same substitution u = u_end + s^2, split also at the density's support edges and
+    at unit steps through its bulk; truncated where the density is negligible."""
+    loc = _Local(p)
+    z0 = d + loc.u_end
+    z_hi = min(dens.hi, max(z0, dens.z_top) + (dens.z_top - dens.z_bottom))
+    if z_hi <= max(z0, dens.lo):
+        return dict.fromkeys(names, 0.0)
+    s_max = math.sqrt(z_hi - z0)
+    marks = [max(z0, dens.lo), *dens.breaks()] + [float(k) for k in range(math.ceil(max(z0, -12.0)), 13)]
+    marks += [max(z0, dens.lo) + 2.0**-k for k in range(1, 14)]  # a light tail falls within 1e-2 of the end
+    s_marks = [math.sqrt(z - z0) for z in marks if z0 < z < z_hi]
+    pts = sorted({0.0, s_max, *[s_ for s_ in loc.s_breaks + loc.s_Pzero + s_marks if 0.0 < s_ < s_max]})
+    out = {}
+    for name in names:
+
+        def f(s, name=name):
+            w = 2.0 * s * dens.pdf(z0 + s * s)
+            if w == 0.0:
+                return 0.0
+            a, P = loc(s)
+            return w * _quantity(name, loc, a, P)
+
+        total = 0.0
+        for lo, hi in zip(pts[:-1], pts[1:], strict=True):
+            val, err, info, *msg = integrate.quad(f, lo, hi, epsabs=0.0, epsrel=_EPSREL, limit=_LIMIT, full_output=1)
+            if msg and err > 1e-8 * abs(val) and err > 1e-300:
+                raise ArithmeticError(f"quadrature of {name!r} at d={d!r} failed: {msg[0]} (err={err:g})")
+            total += val
+        out[name] = float(total)
+    return out
+
+
+def _integrate(d, p, names, dens=None):
     """Integrals of Eqs. 5, 6/18, 10, 21 at separation ``d`` for the given quantities."""
+    if dens is not None:
+        return _integrate_density(d, p, names, dens)
     loc = _Local(p)
     z0 = d + loc.u_end  # lowest in-contact height
     # truncation z_max = max(d, 0) + 12, i.e. u_max = max(-d, 0) + 12: the s grid
@@ -231,7 +267,8 @@ _NAMES = ("contacts", "P", "F", "area")
 
 
 def separation_point(
-    d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4
+    d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4,
+    heights=None
 ):
     """Contacts, load, friction and area per asperity at one separation.
 
@@ -261,6 +298,8 @@ def separation_point(
         Maximum adhesion distance over Burgers vector (Eq. 15).
     tau_f1, tau_f2, a1, a2 : float, optional
         Hurtado-Kim constants of Eq. 2 (``a1 < a2``).
+    heights : RefDensity, optional
+        A height density of :mod:`.heights` (default: the standard normal, Eq. 19).
 
     Returns
     -------
@@ -269,14 +308,11 @@ def separation_point(
     """
     d = finite("d", d)
     p = _params(alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2)
-    return _integrate(d, p, _NAMES)
+    return _integrate(d, p, _NAMES, heights)
 
 
-def _P_of_d(d, p):
-    return _integrate(d, p, ("P",))["P"]
-
-
-def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4):
+def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4,
+               heights=None):
     """State at the smallest separation where the mean load per asperity equals ``P``.
 
     ``P_bar(d) -> +inf`` as ``d -> -inf``.  Without adhesion ``P_bar(d)`` is
@@ -290,7 +326,7 @@ def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43
     ----------
     P : float
         Target mean load per asperity ``P/(N G b^2)`` (> 0 when ``gamma == 0``).
-    alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2
+    alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2, heights
         As in :func:`separation_point`.
 
     Returns
@@ -304,7 +340,7 @@ def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43
         raise ValueError(f"P must be > 0 without adhesion, got {P!r}")
 
     def g(d):
-        return _P_of_d(d, p) - P
+        return _integrate(d, p, ("P",), heights)["P"] - P
 
     lo = 0.0 if p.gamma == 0.0 else -2.0
     glo = g(lo)
@@ -331,12 +367,13 @@ def load_point(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, tau_f1=1 / 43
                 raise ValueError(f"P={P!r} not reached for d <= 40")
     d = optimize.brentq(g, lo, hi, xtol=1e-13, rtol=1e-15, maxiter=200)
     out = {"d": float(d)}
-    out.update(_integrate(d, p, _NAMES))
+    out.update(_integrate(d, p, _NAMES, heights))
     return out
 
 
 def pull_off(
-    alpha, beta, gamma, *, d_max=10.0, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4
+    alpha, beta, gamma, *, d_max=10.0, nu=0.3, h_over_b=1.0, tau_f1=1 / 43, tau_f2=1 / 43 / 30, a1=28.0, a2=8e4,
+    heights=None
 ):
     """Pull-off force per asperity: ``max(0, -min_{d <= d_max} P_bar(d))``.
 
@@ -346,7 +383,7 @@ def pull_off(
 
     Parameters
     ----------
-    alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2
+    alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2, heights
         As in :func:`separation_point`.
     d_max : float, optional
         Largest separation considered.
@@ -359,6 +396,10 @@ def pull_off(
     """
     d_max = finite("d_max", d_max)
     p = _params(alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2)
+
+    def _P_of_d(x, p):
+        return _integrate(x, p, ("P",), heights)["P"]
+
     step = 0.25
     start = min(-1.0, d_max - 4.0)
     grid = list(np.arange(start, d_max, step)) + [d_max]

@@ -3,7 +3,12 @@ r"""Both summit estimators on one measured surface, compared, with reasons to di
 :func:`analyse_surface` reads a file (or takes a surface already read), runs
 :func:`~asperity.topography.spectral.spectral_summits` and
 :func:`~asperity.topography.detected.detected_summits`, and lists what looks unreliable
-(the thresholds below).  With a Burgers vector it adds the paper's groups (Eq 7),
+(the thresholds below).  It also reports the shape of the detected summit heights
+(skewness, kurtosis) and the height distributions of :mod:`asperity.heights` fitted to
+them, ranked by AIC (:func:`asperity.heights.fit_heights`); the best one's spelling (e.g.
+``pearson3:skew=-0.41``) or the summits written to a file
+(:meth:`SurfaceAnalysis.write_summits`, then ``empirical:FILE`` or ``best:FILE``) hand the
+shape to the model.  With a Burgers vector it adds the paper's groups (Eq 7),
 
 .. math::
     \alpha = (\sigma_s/R)^{1/2},\qquad \beta = (R\sigma_s)^{1/2}/b .
@@ -25,9 +30,10 @@ import numpy as np
 
 from .._validation import check_optional_positive
 from ..groups import regime_beta, roughness_alpha
+from ..heights import MIN_SAMPLES, HeightsFit, fit_heights, write_samples
 from ..materials import as_material
 from ..surface import Surface
-from .detected import detected_summits
+from .detected import detected_summit_heights, detected_summits
 from .read import read_topography
 from .spectral import spectral_summits
 from .summits import SummitParameters, plain
@@ -91,6 +97,11 @@ class SurfaceAnalysis:
         ``{'spectral': {'alpha': .., 'beta': ..}, 'detected': {...}}``, Eq 7 of the paper.
     source : str or None
         File the surface was read from.
+    heights : HeightsFit or None
+        Skewness and kurtosis of the detected summit heights and the fitted height
+        distributions, ranked (None with fewer than 20 summits).
+    summit_heights : ndarray or None
+        The detected summit (line scan: peak) heights above the mean plane [m].
     """
 
     spectral: SummitParameters
@@ -104,6 +115,8 @@ class SurfaceAnalysis:
     b: float | None = None
     groups: dict[str, dict[str, float]] | None = None
     source: str | None = None
+    heights: HeightsFit | None = None
+    summit_heights: np.ndarray | None = field(default=None, repr=False, compare=False)
 
     def surface(self, area, method: str = "spectral") -> Surface:
         """The GW :class:`~asperity.surface.Surface` of one method's summits over a nominal ``area``.
@@ -137,8 +150,25 @@ class SurfaceAnalysis:
                ("dim", "nb_grid_pts", "physical_sizes", "pixel_size", "n_points", "b", "groups", "source")}
         out["spectral"] = self.spectral.to_dict()
         out["detected"] = self.detected.to_dict()
+        out["heights"] = None if self.heights is None else self.heights.to_dict()
         out["warnings"] = list(self.warnings)
         return out
+
+    def write_summits(self, path) -> None:
+        """Write the detected summit heights [m], one per line under the header ``z_m``, atomically.
+
+        ``--heights empirical:FILE`` or ``best:FILE`` (:func:`asperity.heights.parse_heights`)
+        read them back.
+
+        Raises
+        ------
+        ValueError
+            If fewer than 20 summits were detected.
+        """
+        if self.summit_heights is None or self.summit_heights.size < MIN_SAMPLES:
+            raise ValueError(f"only {0 if self.summit_heights is None else self.summit_heights.size} summits "
+                             f"detected: at least {MIN_SAMPLES} are needed for a height distribution")
+        write_samples(path, self.summit_heights, header="z_m")
 
     def summary(self) -> str:
         """A few lines for a terminal."""
@@ -159,11 +189,20 @@ class SurfaceAnalysis:
             lines.append(row)
         s = self.spectral
         lines.append(f"rms height {s.sigma * 1e9:.4g} nm, alpha_N = {s.alpha_n:.3g}")
+        if self.heights is not None:
+            h = self.heights
+            what = "peak" if self.dim == 1 else "summit"
+            lines.append(f"{what} heights ({h.n}): skewness {h.skewness:.3g}, kurtosis {h.kurtosis:.3g} "
+                         "(Gaussian: 0, 3); distributions ranked by AIC:")
+            lines += ["  " + line for line in h.table().splitlines()]
+            lines.append(f"model: --heights {h.best.spec} (or --summits FILE, then --heights best:FILE or "
+                         "empirical:FILE)")
         lines += [f"warning: {w}" for w in self.warnings]
         return "\n".join(lines)
 
 
-def analyse_surface(path_or_topography, *, material=None, b=None, **read_kwargs) -> SurfaceAnalysis:
+def analyse_surface(path_or_topography, *, material=None, b=None, heights: bool = True,
+                    **read_kwargs) -> SurfaceAnalysis:
     """Summit parameters of a measured surface by both methods, with diagnostics.
 
     Parameters
@@ -178,6 +217,9 @@ def analyse_surface(path_or_topography, *, material=None, b=None, **read_kwargs)
         Burgers vector [m], > 0; if given (or via ``material``), the dimensionless groups
         :math:`\\alpha = (\\sigma_s/R)^{1/2}` and :math:`\\beta = (R\\sigma_s)^{1/2}/b`
         (Eq 7 of the paper) are reported for each method.
+    heights : bool
+        Fit the height distributions to the detected summit heights (default True; about
+        0.1-1 s).
     **read_kwargs
         ``physical_sizes`` (metres), ``unit`` (of the stored heights), ``channel_index``,
         ``fill_undefined`` for :func:`~asperity.topography.read_topography`; only with a file.
@@ -191,7 +233,9 @@ def analyse_surface(path_or_topography, *, material=None, b=None, **read_kwargs)
         resolution is too coarse (summits fewer than 5 pixels apart, or :math:`R`
         under 3 pixels); fewer than 30 summits; an anisotropic map (mean square slopes
         along x and y differ by more than a factor 1.5); and, for a line scan, that
-        summit values are inferred from one profile assuming isotropy.
+        summit values are inferred from one profile assuming isotropy (and the fitted
+        heights are those of profile peaks); fewer than 20 summits for a height fit.
+        ``heights`` holds the summit-height skewness, kurtosis and the ranked fits.
 
     Raises
     ------
@@ -221,22 +265,34 @@ def analyse_surface(path_or_topography, *, material=None, b=None, **read_kwargs)
                         f"topography or line scan, got {type(path_or_topography).__name__}")
     else:
         topo = path_or_topography
+    if not isinstance(heights, bool):
+        raise TypeError(f"heights must be True or False, got {heights!r}")
     try:
         topo = topo if topo.unit in (None, "m") else topo.to_unit("m")
         spectral, detected = spectral_summits(topo), detected_summits(topo)
+        z = detected_summit_heights(topo)
     except ValueError as err:
         if source is None:
             raise
         raise ValueError(f"{source}: {err}") from None
+    fit, notes = None, []
+    if heights and z.size >= MIN_SAMPLES and np.std(z) > 1e-12 * np.max(np.abs(z)):
+        fit = fit_heights(z)
+        if topo.dim == 1:
+            notes.append("line scan: the height distributions are fitted to profile peaks, which are lower and "
+                         "less skewed than the surface's summits")
+    elif heights:
+        notes.append(f"{z.size} summits of {'equal heights' if z.size >= MIN_SAMPLES else 'too few'}: no height "
+                     f"distribution fitted (at least {MIN_SAMPLES} of different heights are needed)")
     pixel = tuple(float(p) for p in topo.pixel_size)
     return SurfaceAnalysis(
         spectral=spectral, detected=detected, dim=topo.dim,
         nb_grid_pts=tuple(int(n) for n in topo.nb_grid_pts),
         physical_sizes=tuple(float(s) for s in topo.physical_sizes), pixel_size=pixel,
         n_points=int(np.prod(topo.nb_grid_pts)),
-        warnings=_diagnose(spectral, detected, pixel, topo.dim) + _no_burgers(material, b_value),
+        warnings=_diagnose(spectral, detected, pixel, topo.dim) + _no_burgers(material, b_value) + notes,
         b=b_value, groups=None if b_value is None else _groups(spectral, detected, b_value),
-        source=source)
+        source=source, heights=fit, summit_heights=z)
 
 
 def _burgers(material, b):

@@ -6,14 +6,15 @@ their number per area gives :math:`\eta`, the mean of their curvatures gives
 :math:`R = 1/\bar\kappa`, the spread of their heights :math:`\sigma_s`.  The detected
 summit heights are the natural input of empirical height distributions.
 
-=========================  ==================================================================
-function                   what it finds
-=========================  ==================================================================
-:func:`local_maxima_2d`    interior 8-neighbour maxima of a map (plateaus count once)
-:func:`local_maxima_1d`    interior 3-point peaks of a profile
-:func:`summit_curvatures`  mean curvature :math:`-(h_{xx}+h_{yy})/2` at the maxima of a map
-:func:`detected_summits`   the GW parameters from the maxima (maps and line scans)
-=========================  ==================================================================
+===============================  ============================================================
+function                         what it finds
+===============================  ============================================================
+:func:`local_maxima_2d`          interior 8-neighbour maxima of a map (plateaus count once)
+:func:`local_maxima_1d`          interior 3-point peaks of a profile
+:func:`summit_curvatures`        mean curvature :math:`-(h_{xx}+h_{yy})/2` at the maxima of a map
+:func:`detected_summits`         the GW parameters from the maxima (maps and line scans)
+:func:`detected_summit_heights`  the heights of those maxima (for height distributions)
+===============================  ============================================================
 
 A line scan's peaks are converted to the summits of the isotropic Gaussian surface it is
 taken from (Nayak 1971; McCool 1986; Rice 1944): see :func:`detected_summits`.
@@ -36,7 +37,7 @@ from .._validation import as_float_array, check_finite_result, check_scalar_posi
 from .spectral import NAYAK_SIGMA_S, RICE_SIGMA_P, bandwidth_alpha, summit_sigma
 from .summits import SummitParameters, moments, prepare
 
-__all__ = ["local_maxima_2d", "local_maxima_1d", "summit_curvatures", "detected_summits"]
+__all__ = ["local_maxima_2d", "local_maxima_1d", "summit_curvatures", "detected_summits", "detected_summit_heights"]
 
 
 def _grid(h, ndim: int, name: str = "h") -> np.ndarray:
@@ -205,6 +206,46 @@ def detected_summits(topography) -> SummitParameters:
     if topo.dim == 2:
         return _detected_map(h, topo.pixel_size)
     return _detected_profile(topo, h)
+
+
+def detected_summit_heights(topography) -> np.ndarray:
+    r"""Heights of the summits (map) or peaks (line scan) that :func:`detected_summits` measures.
+
+    After removing the mean plane (line), the interior local maxima of
+    :func:`local_maxima_2d` (maps) or :func:`local_maxima_1d` (line scans); their spread is
+    the detected :math:`\sigma_s` of a map, their shape the input of
+    :func:`asperity.heights.fit_heights` and :class:`asperity.heights.Empirical`.  The heights
+    of a line scan's peaks are not those of the surface's summits (they are lower and less
+    skewed): use a map where possible.
+
+    .. math:: z_s = h_{i,j}\ \text{at the local maxima of the detrended heights}
+
+    Parameters
+    ----------
+    topography : SurfaceTopography.Topography or SurfaceTopography.UniformLineScan
+        Uniform grid, heights in ``topography.unit`` (taken as metres if None).
+
+    Returns
+    -------
+    ndarray
+        1-D, heights above the mean plane in the topography's unit.
+
+    Raises
+    ------
+    TypeError
+        If ``topography`` is not a SurfaceTopography object.
+    ValueError
+        For a surface :func:`~asperity.topography.summits.prepare` refuses.
+
+    References
+    ----------
+    Greenwood & Williamson (1966); Nayak (1971) (peak and summit height distributions).
+    """
+    topo = prepare(topography)
+    h = np.asarray(np.ma.getdata(topo.heights()), dtype=float)
+    if topo.dim == 2:
+        return h[1:-1, 1:-1][local_maxima_2d(h)]
+    return h[1:-1][local_maxima_1d(h)]
 
 
 def _mean_curvature(kappa) -> float:

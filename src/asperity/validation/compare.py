@@ -20,8 +20,13 @@ Compared quantities, SI units (columns :data:`asperity.quantities.VALIDATION_COL
   only), and the model's :math:`d + \bar z_s` (with an interaction: :math:`d_{loc} - \Delta`);
 * the number of contact spots (BEM) beside the number of asperities in contact (model).
 
-Costs are measured: the BEM solves, the summit analysis and the model's curves (wall time,
-this process).
+Other models can be put beside them (``models``, :mod:`~asperity.validation.models`): the
+interacting and coalescing Hertzian asperities on the map's own summits (``'icha'``),
+Persson's area from the rms slope (``'persson'``) and the light-load asymptote of Bush,
+Gibson & Thomas (``'bgt'``).
+
+Costs are measured: the BEM solves, the summit analysis and the model's curves, and each
+other model with its own input analysis (wall time, this process).
 """
 
 from __future__ import annotations
@@ -36,13 +41,14 @@ import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._json import dumps
-from .._optional import require
 from ..materials import as_material
 from ..physical import PhysicalContact
 from ..quantities import VALIDATION_COLUMNS
 from ..topography import analyse_surface, read_topography
 from ..topography.summits import plain
 from .bem import DEFAULT_TOLERANCE, BemCurve, bem_contact, subsample
+from .models import AREA_METHODS, check_models, model_columns, run_icha, run_slope_law
+from .plot import plot_validation
 
 __all__ = ["SurfaceValidation", "validate_surface", "METHODS"]
 
@@ -52,8 +58,8 @@ METHODS = ("spectral", "detected")
 
 @dataclass(frozen=True)
 class SurfaceValidation:
-    """The statistical model beside a boundary-element solution; columns in
-    :data:`asperity.quantities.VALIDATION_COLUMNS` (one row per load).
+    """The models beside a boundary-element solution; columns from
+    :data:`asperity.quantities.VALIDATION_COLUMNS` (one row per load), those of the models compared.
 
     Attributes
     ----------
@@ -61,18 +67,24 @@ class SurfaceValidation:
         The columns, SI units.
     bem : BemCurve
         The boundary-element results.
-    analysis : SurfaceAnalysis
-        Summit parameters of the (subsampled) surface, both methods, with its warnings.
+    analysis : SurfaceAnalysis or None
+        Summit parameters of the (subsampled) surface, both methods, with its warnings
+        (None without the GW model).
     interaction : str
-        Name of the interaction correction of the model (:mod:`asperity.interaction`).
+        Name of the interaction correction of the GW model (:mod:`asperity.interaction`).
     costs : dict
-        Wall times [s]: ``bem`` (all solves), ``analysis`` (summit statistics),
-        ``model`` (the statistical curves, both methods), ``model_per_method``.
+        Wall times [s]: ``bem`` (all solves); for GW ``analysis`` (summit statistics),
+        ``model`` (the statistical curves, both methods), ``model_per_method``; ``icha``
+        (summits, field and loads), ``persson``, ``bgt`` (rms slope and law).
     parameters : dict
-        Material, E*, grid, sizes, periodicity, source file.
+        Material, E*, grid, sizes, periodicity, source file, models.
+    models : tuple of str
+        The models compared (:data:`asperity.validation.models.MODELS`).
+    icha : IchaCurve or None
+        The ICHA results, if compared.
     contacts : dict of str -> PhysicalContact
-        The model's contact for each summit method (``'spectral'``, ``'detected'``): what
-        it computed (:meth:`~asperity.physical.PhysicalContact.describe`).
+        The GW model's contact for each summit method (``'spectral'``, ``'detected'``): what
+        it computed (:meth:`~asperity.physical.PhysicalContact.describe`); empty without GW.
     """
 
     table: dict
@@ -81,14 +93,21 @@ class SurfaceValidation:
     interaction: str = "none"
     costs: dict = field(default_factory=dict)
     parameters: dict = field(default_factory=dict)
+    models: tuple = ("gw",)
+    icha: Any = field(default=None, repr=False)
     contacts: dict = field(default_factory=dict, repr=False, compare=False)
 
     def __len__(self) -> int:
         return len(self.bem)
 
+    @property
+    def methods(self) -> tuple[str, ...]:
+        """The area estimates compared: ``spectral``, ``detected`` (GW), ``icha``, ``persson``, ``bgt``."""
+        return tuple(m for model in self.models for m in AREA_METHODS[model])
+
     def columns(self) -> dict[str, np.ndarray]:
         """Column name (SI suffix) -> array, in the order of :data:`~asperity.quantities.VALIDATION_COLUMNS`."""
-        return {name: np.asarray(self.table[name]) for name in VALIDATION_COLUMNS}
+        return {name: np.asarray(self.table[name]) for name in model_columns(self.models)}
 
     def to_csv(self, path_or_buffer=None) -> str | None:
         """Write the table as CSV (header of column names); return the text if no path is given."""
@@ -96,29 +115,38 @@ class SurfaceValidation:
 
     def to_dataframe(self):
         """The table as a pandas DataFrame (needs pandas); units in ``attrs['units']``."""
-        units = {name: q.si_unit for name, q in VALIDATION_COLUMNS.items()}
+        units = {name: VALIDATION_COLUMNS[name].si_unit for name in self.columns()}
         return columns_to_dataframe(self.columns(), {**self.parameters, "units": units})
 
     def deviation(self, method: str = "spectral", *, up_to: float = 0.2) -> float:
-        """Largest :math:`|A_{GW}/A_{BEM} - 1|` of ``method`` over loads whose BEM area
-        fraction is at most ``up_to`` (NaN if there is none)."""
-        if method not in METHODS:
-            raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+        """Largest :math:`|A/A_{BEM} - 1|` of ``method`` (:attr:`methods`) over loads whose BEM
+        area fraction is at most ``up_to`` (NaN if there is none)."""
+        if method not in self.methods:
+            raise ValueError(f"method must be one of {self.methods}, got {method!r}")
         keep = self.table["fraction_bem"] <= up_to
         dev = np.abs(self.table[f"dev_{method}"][keep])
         return float(dev.max()) if dev.size else math.nan
 
     @property
     def cost_ratio(self) -> float:
-        """Statistical-model cost (analysis + curves) over boundary-element cost."""
+        """GW cost (summit analysis + curves) over boundary-element cost (NaN without GW)."""
+        if "gw" not in self.models:
+            return math.nan
         return (self.costs["analysis"] + self.costs["model"]) / self.costs["bem"]
+
+    @property
+    def cost_ratios(self) -> dict[str, float]:
+        """Each model's cost (with its input analysis) over the boundary-element cost."""
+        out = {"gw": self.cost_ratio} if "gw" in self.models else {}
+        out.update({m: self.costs[m] / self.costs["bem"] for m in self.models if m != "gw"})
+        return out
 
     def to_dict(self) -> dict[str, Any]:
         """Plain dictionary for strict JSON (NaN and infinity as None)."""
-        return {"parameters": plain(self.parameters), "interaction": self.interaction,
-                "costs": plain({**self.costs, "ratio": self.cost_ratio}),
-                "max_deviation_up_to_20pc": {m: plain(self.deviation(m)) for m in METHODS},
-                "summits": self.analysis.to_dict(),
+        return {"parameters": plain(self.parameters), "interaction": self.interaction, "models": list(self.models),
+                "costs": plain({**self.costs, "ratio": self.cost_ratio, "ratios": self.cost_ratios}),
+                "max_deviation_up_to_20pc": {m: plain(self.deviation(m)) for m in self.methods},
+                "summits": None if self.analysis is None else self.analysis.to_dict(),
                 "table": {k: [plain(x) for x in v.tolist()] for k, v in self.columns().items()}}
 
     def to_json(self) -> str:
@@ -130,36 +158,7 @@ class SurfaceValidation:
 
         ``fmt`` is the image format (default: from the file suffix, else png).
         """
-        require("matplotlib", purpose="plotting a validation", extra="plot")
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
-
-        fmt = fmt or (os.path.splitext(os.fspath(path))[1][1:].lower() or "png")
-        t, A0 = self.table, self.bem.nominal_area
-        fig = Figure(figsize=(11, 3.6), layout="constrained")
-        FigureCanvasAgg(fig)
-        ax1, ax2, ax3 = fig.subplots(1, 3)
-        P = t["P_N"]
-        ax1.loglog(P, t["fraction_bem"], "ko-", label="boundary elements")
-        ax2.semilogx(P, t["gap_bem_m"] * 1e9, "ko-", label="boundary elements")
-        ax3.loglog(P, t["spots_bem"], "ko-", label="BEM contact spots")
-        for method, style in zip(METHODS, ("b^--", "rs:"), strict=True):
-            label = f"GW, {method} summits" + ("" if self.interaction == "none" else f" + {self.interaction}")
-            ax1.loglog(P, t[f"area_{method}_m2"] / A0, style, label=label)
-            ax2.semilogx(P, t[f"gap_{method}_m"] * 1e9, style, label=label)
-            ax3.loglog(P, np.maximum(t[f"contacts_{method}"], 1e-300), style, label=f"GW asperities, {method}")
-        ax1.set_ylabel("real contact area / nominal area")
-        ax2.set_ylabel("mean gap (nm)")
-        ax3.set_ylabel("contact spots / asperities in contact")
-        for ax in (ax1, ax2, ax3):
-            ax.set_xlabel("load P (N)")
-        ax1.legend(fontsize=7)
-        ax3.legend(fontsize=7)
-        src = self.parameters.get("source") or "surface"
-        fig.suptitle(f"{os.path.basename(str(src))}: {self.parameters['material']}, grid "
-                     f"{self.bem.nb_grid_pts[0]}x{self.bem.nb_grid_pts[1]}, "
-                     f"{'periodic' if self.bem.periodic else 'free'} boundaries")
-        fig.savefig(path, dpi=150, format=fmt)
+        plot_validation(self, path, fmt)
 
 
 def _topography(surface, read_kwargs):
@@ -172,9 +171,9 @@ def _topography(surface, read_kwargs):
     return surface, None
 
 
-def validate_surface(surface, P, *, material, grid=None, periodic=None, interaction="none",
+def validate_surface(surface, P, *, material, grid=None, periodic=None, interaction="none", models=("gw",),
                      tolerance=DEFAULT_TOLERANCE, maxiter=10000, progress=False, **read_kwargs) -> SurfaceValidation:
-    r"""Boundary-element contact beside the statistical model on one surface, versus load.
+    r"""Boundary-element contact beside the statistical and asperity models on one surface, versus load.
 
     Parameters
     ----------
@@ -185,18 +184,21 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
         Total normal forces [N] on the scanned area, > 0.
     material : Material or str
         The elastic body (a name from the table, or :func:`asperity.materials.pair` for
-        two bodies): its contact modulus :math:`E^*` drives both solutions; its Burgers
+        two bodies): its contact modulus :math:`E^*` drives all solutions; its Burgers
         vector scales the statistical model (Hertz without adhesion: results do not
         depend on it).
     grid : int, optional
-        Average the map down to at most ``grid`` points per axis first; both solutions
+        Average the map down to at most ``grid`` points per axis first; all solutions
         then see the same averaged surface.
     periodic : bool, optional
-        Boundary-element boundaries; default: the topography's (files read from disk are
-        non-periodic unless their reader says otherwise).
+        Boundary-element (and ICHA) boundaries; default: the topography's (files read from
+        disk are non-periodic unless their reader says otherwise).
     interaction : str
-        Interaction correction of the statistical model (:data:`asperity.interaction.INTERACTIONS`);
+        Interaction correction of the GW model (:data:`asperity.interaction.INTERACTIONS`);
         default ``'none'`` (plain GW).
+    models : sequence of str or str
+        Models put beside the boundary elements (:data:`asperity.validation.models.MODELS`:
+        ``'gw'``, ``'icha'``, ``'persson'``, ``'bgt'``; a string is split at commas); default GW only.
     tolerance, maxiter, progress
         Passed to :func:`~asperity.validation.bem.bem_contact`.
     **read_kwargs
@@ -205,66 +207,83 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     Returns
     -------
     SurfaceValidation
-        The table (:data:`asperity.quantities.VALIDATION_COLUMNS`), both solutions, the
-        summit analysis and the costs.
+        The table (:data:`asperity.quantities.VALIDATION_COLUMNS`, the models' columns),
+        the solutions, the summit analysis and the costs.
 
     Raises
     ------
     TypeError, ValueError
         For an unreadable or degenerate surface (the message names the file), bad loads,
-        grid, material or interaction.
+        grid, material, interaction (or an interaction without the GW model) or models.
     asperity._optional.MissingDependency
         Without ContactMechanics (``pip install 'asperity[bem]'``) or SurfaceTopography.
     """
     mat = as_material(material)
+    models = check_models(models)
+    if "gw" not in models and interaction != "none":
+        raise ValueError(f"interaction={interaction!r} corrects the GW model: include 'gw' in models")
     topo, source = _topography(surface, read_kwargs)
+    analysis, t_analysis = None, 0.0
     try:
         topo = subsample(topo if topo.unit in (None, "m") else topo.to_unit("m"), grid)
-        start = time.perf_counter()
-        analysis = analyse_surface(topo)
-        t_analysis = time.perf_counter() - start
+        if "gw" in models:
+            start = time.perf_counter()
+            analysis = analyse_surface(topo)
+            t_analysis = time.perf_counter() - start
     except ValueError as err:
         raise ValueError(f"{source}: {err}") if source else err from None
     A0 = float(np.prod(topo.physical_sizes))
-    contacts, curves, t_model = {}, {}, {}
-    for method in METHODS:
-        summits = getattr(analysis, method)
-        contacts[method] = PhysicalContact(mat, summits.surface(A0), adhesion=False, interaction=interaction)
+    contacts = {}
+    if "gw" in models:
+        for method in METHODS:
+            summits = getattr(analysis, method)
+            contacts[method] = PhysicalContact(mat, summits.surface(A0), adhesion=False, interaction=interaction)
     bem = bem_contact(topo, P, E_star=mat.E_star, periodic=periodic, tolerance=tolerance, maxiter=maxiter,
                       progress=progress)
-    for method in METHODS:
-        start = time.perf_counter()
-        curves[method] = contacts[method].load_curve(bem.P)
-        t_model[method] = time.perf_counter() - start
-    table = _table(bem, analysis, contacts, curves)
-    costs = {"bem": float(np.sum(bem.seconds)), "analysis": t_analysis, "model": sum(t_model.values()),
-             "model_per_method": t_model}
+    table = {"P_N": bem.P, "p_Pa": bem.P / A0, "fraction_bem": bem.area_fraction, "area_bem_m2": bem.area,
+             "gap_bem_m": bem.mean_gap, "sep_bem_m": bem.separation, "spots_bem": bem.spots,
+             "iterations_bem": bem.iterations}
+    costs = {"bem": float(np.sum(bem.seconds))}
+    icha = None
+    if "gw" in models:
+        curves, t_model = {}, {}
+        for method in METHODS:
+            start = time.perf_counter()
+            curves[method] = contacts[method].load_curve(bem.P)
+            t_model[method] = time.perf_counter() - start
+        table.update(_gw_table(bem, analysis, contacts, curves))
+        costs.update({"analysis": t_analysis, "model": sum(t_model.values()), "model_per_method": t_model})
+    if "icha" in models:
+        cols, costs["icha"], icha = run_icha(topo, bem.P, mat.E_star, bem.periodic, bem.area)
+        table.update(cols)
+    slopes = {}
+    for name in ("persson", "bgt"):
+        if name in models:
+            cols, costs[name], slopes[name] = run_slope_law(name, topo, bem.P, mat.E_star, A0, bem.area)
+            table.update(cols)
     params = {"material": mat.name, "E_star_Pa": mat.E_star, "nb_grid_pts": bem.nb_grid_pts,
               "physical_sizes_m": tuple(float(s) for s in topo.physical_sizes), "nominal_area_m2": A0,
-              "periodic": bem.periodic, "grid": grid, "source": source, "interaction": contacts[METHODS[0]]
-              .interaction.name, "tolerance": tolerance, "warnings": list(analysis.warnings)}
-    return SurfaceValidation(table=table, bem=bem, analysis=analysis, interaction=params["interaction"],
-                             costs=costs, parameters=params, contacts=contacts)
+              "periodic": bem.periodic, "grid": grid, "source": source, "models": list(models),
+              "interaction": contacts[METHODS[0]].interaction.name if contacts else "none",
+              "tolerance": tolerance, "warnings": list(analysis.warnings) if analysis else []}
+    if slopes:
+        params["rms_slope"] = next(iter(slopes.values()))
+    if icha is not None:
+        params["icha_summits"] = icha.n_summits
+    return SurfaceValidation(table={k: np.asarray(v) for k, v in table.items()}, bem=bem, analysis=analysis,
+                             interaction=params["interaction"], costs=costs, parameters=params, models=models,
+                             icha=icha, contacts=contacts)
 
 
-def _table(bem, analysis, contacts, curves) -> dict[str, np.ndarray]:
-    A0 = bem.nominal_area
-    t = {"P_N": bem.P, "p_Pa": bem.P / A0, "fraction_bem": bem.area_fraction, "area_bem_m2": bem.area}
+def _gw_table(bem, analysis, contacts, curves) -> dict[str, np.ndarray]:
+    t = {}
     for method in METHODS:
         t[f"area_{method}_m2"] = curves[method].area
-    for method in METHODS:
-        t[f"dev_{method}"] = curves[method].area / bem.area - 1.0 if np.all(bem.area > 0) else \
-            np.where(bem.area > 0, curves[method].area / np.where(bem.area > 0, bem.area, 1.0) - 1.0, np.nan)
-    t["gap_bem_m"] = bem.mean_gap
-    for method in METHODS:
+        t[f"dev_{method}"] = np.where(bem.area > 0, curves[method].area / np.where(bem.area > 0, bem.area, 1.0)
+                                      - 1.0, np.nan)
         summits, c = getattr(analysis, method), contacts[method]
         shift = c.interaction.shift(curves[method].dimensionless.P) * summits.sigma_s
         t[f"gap_{method}_m"] = curves[method].d + shift + summits.mean_summit_height
-    t["sep_bem_m"] = bem.separation
-    for method in METHODS:
-        t[f"sep_{method}_m"] = curves[method].d + getattr(analysis, method).mean_summit_height
-    t["spots_bem"] = bem.spots
-    for method in METHODS:
+        t[f"sep_{method}_m"] = curves[method].d + summits.mean_summit_height
         t[f"contacts_{method}"] = curves[method].contacts
-    t["iterations_bem"] = bem.iterations
-    return {name: np.asarray(t[name]) for name in VALIDATION_COLUMNS}
+    return t

@@ -1,16 +1,14 @@
-r"""Statistics of asperity (summit) heights: the :math:`\phi(\bar z)` of Eqs (5)-(10).
-
-Heights are in units of their standard deviation :math:`\sigma`.  A distribution
-supplies its density and the derivatives of the density (for the separation that
-matches a load, found by Newton's method), plus where its upper tail becomes
-negligible.  The multi-asperity integrals only ever need
+r"""The paper's Gaussian summit heights (Eq 19) and the GW moment of a Gaussian.
 
 .. math::
-    S_j(\bar d) = \sum_k w_k\, q_k\, \phi^{(j)}(\bar d + \bar u_k),
+    \phi(\bar z) = \frac{e^{-\bar z^2/2}}{\sqrt{2\pi}},\qquad
+    F_n(\bar d) = \int_{\bar d}^\infty(\bar z-\bar d)^n\phi\,d\bar z
+        = \frac{\Gamma(n+1)}{\sqrt{2\pi}}\,e^{-\bar d^2/4}\,D_{-n-1}(\bar d)
 
-sums over quadrature nodes :math:`\bar u_k` in penetration, so a distribution may
-override :meth:`HeightDistribution.weighted_sums` with something faster (the Gaussian
-does).  Exponential, Weibull or empirical heights implement the same interface.
+with :math:`D_\nu` the parabolic-cylinder function (Greenwood & Williamson 1966).  The
+Gaussian factorises its quadrature sums (:meth:`Gaussian.panel_sums`), which makes every
+separation cost a row of exponentials; the two-Gaussian mixture and the kernel estimate
+of :mod:`asperity.heights.mixture` reuse it component by component.
 
 References
 ----------
@@ -20,79 +18,45 @@ References
 
 from __future__ import annotations
 
-import abc
 import math
+from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from scipy import special
 
-from ._validation import as_float_array
+from .._validation import as_float_array
+from .base import HeightDistribution, check_order, gw_moment_quadrature
 
-__all__ = ["HeightDistribution", "Gaussian", "GAUSSIAN"]
+__all__ = ["Gaussian", "GAUSSIAN", "gaussian_moment"]
 
 _SQRT_2PI = math.sqrt(2.0 * math.pi)
 
 
-class HeightDistribution(abc.ABC):
-    """Interface of a distribution of asperity heights (in units of sigma).
+@dataclass(frozen=True)
+class Gaussian(HeightDistribution):
+    r"""Standard normal heights (Eq 19): :math:`\phi(\bar z) = e^{-\bar z^2/2}/\sqrt{2\pi}`.
 
-    The quadrature nodes are placed for a smooth density on [-z_top, z_top]: a density
-    with a kink or a finite support edge (exponential, Weibull) should also override
-    :meth:`weighted_sums` or add its own breakpoints; the Gaussian needs neither.
+    Examples
+    --------
+    >>> g = Gaussian()
+    >>> g, g == GAUSSIAN, g.spec, float(g.sf(0.0))
+    (Gaussian(), True, 'gaussian', 0.5)
     """
 
-    #: Heights above this carry a negligible share of any integral (pdf < ~1e-22).
-    z_top: float = 10.0
-
-    def __repr__(self) -> str:
-        """``Name()``, so signatures and help() show the distribution, not an object address
-        (a distribution with parameters shows them, as a dataclass does).
-
-        >>> GAUSSIAN
-        Gaussian()
-        """
-        return f"{type(self).__name__}()"
-
-    @abc.abstractmethod
-    def pdf(self, z):
-        """Probability density phi(z)."""
-
-    @abc.abstractmethod
-    def pdf_derivative(self, z, order: int):
-        """d^order phi / dz^order at z (order 1 or 2)."""
-
-    @abc.abstractmethod
-    def sf(self, z):
-        """Survival function: the fraction of asperities higher than z."""
-
-    def weighted_sums(self, d, u, weights, order: int = 0):
-        r"""Return ``[S_0, ..., S_order]``, :math:`S_j[i, c] = \sum_k W[k, c]\phi^{(j)}(d_i + u_k)`.
-
-        ``weights`` is a (nodes, columns) matrix.  The default forms the density matrices;
-        subclasses may do better.
-        """
-        x = d[:, None] + u[None, :]
-        out = [self.pdf(x) @ weights]
-        for j in range(1, order + 1):
-            out.append(self.pdf_derivative(x, j) @ weights)
-        return out
-
-    def panel_sums(self, d, centers, offsets, weights, order: int = 0):
-        """:meth:`weighted_sums` for nodes ``centers[p] + offsets[j]`` (weights (P, J, c))."""
-        u = (centers[:, None] + offsets[None, :]).ravel()
-        return self.weighted_sums(d, u, weights.reshape(u.size, -1), order)
-
-
-class Gaussian(HeightDistribution):
-    r"""Standard normal heights (Eq 19): :math:`\phi(\bar z) = e^{-\bar z^2/2}/\sqrt{2\pi}`."""
-
     z_top = 10.0
+    z_bottom = -10.0
+    z_end = 35.0
+    fast_sums = True
+    name: ClassVar[str] = "gaussian"
 
     def pdf(self, z):
+        """Density :math:`\\phi(z)`, shape of ``z``."""
         z = np.asarray(z, dtype=float)
         return np.exp(-0.5 * z * z) / _SQRT_2PI
 
     def pdf_derivative(self, z, order: int):
+        """:math:`\\phi' = -z\\phi` (order 1) or :math:`\\phi'' = (z^2-1)\\phi` (order 2)."""
         z = np.asarray(z, dtype=float)
         if order == 1:
             return -z * self.pdf(z)
@@ -101,7 +65,12 @@ class Gaussian(HeightDistribution):
         raise ValueError(f"order must be 1 or 2, got {order}")
 
     def sf(self, z):
+        """Survival function :math:`Q(z) = \\Phi(-z)`."""
         return special.ndtr(-np.asarray(z, dtype=float))
+
+    def stats(self) -> tuple[float, float, float, float]:
+        """``(0, 1, 0, 3)``: mean, variance, skewness, kurtosis."""
+        return 0.0, 1.0, 0.0, 3.0
 
     def weighted_sums(self, d, u, weights, order: int = 0):
         # phi' = -x phi and phi'' = (x^2 - 1) phi with x = d + u: one exponential matrix
@@ -154,27 +123,66 @@ class Gaussian(HeightDistribution):
         return out
 
     def moment(self, d, order):
-        r"""Closed form :math:`\int_d^\infty (z-d)^k\phi(z)\,dz = \Gamma(k+1)e^{-d^2/4}D_{-k-1}(d)/\sqrt{2\pi}`.
+        r"""GW moment :math:`\int_d^\infty (z-d)^n\phi(z)\,dz = \Gamma(n+1)e^{-d^2/4}D_{-n-1}(d)/\sqrt{2\pi}`.
 
-        Uses :func:`scipy.special.pbdv`, good to about 1e-10 relative for non-integer
-        orders; the tests use mpmath for tighter checks.
+        :func:`gaussian_moment`: the parabolic-cylinder closed form for integer orders
+        (:func:`scipy.special.pbdv`), fixed high-order quadrature otherwise.
 
         Parameters
         ----------
         d : array_like
-            Separation :math:`\bar d`.
+            Separation :math:`\bar d`, finite (any shape).
         order : float
-            :math:`k > -1` (0: contact fraction, 1: area, 3/2: Hertz load).
+            :math:`n > -1` (0: contact fraction, 1: area, 3/2: Hertz load).
+
+        Returns
+        -------
+        ndarray
+            :math:`F_n(\bar d)`, shape of ``d``.
         """
         d = as_float_array(d, "d", allow_empty=True)
-        if np.any(d < -35.0):
-            raise ValueError("d must be >= -35 for the parabolic-cylinder form (it overflows below)")
-        k = float(order)
-        if not k > -1:
-            raise ValueError(f"order must be > -1, got {order!r}")
-        D, _ = special.pbdv(-k - 1.0, d)
-        return special.gamma(k + 1.0) * np.exp(-0.25 * d * d) * D / _SQRT_2PI
+        return gaussian_moment(d, check_order(order))
 
 
 #: The paper's distribution (Eq 19).
 GAUSSIAN = Gaussian()
+
+
+def gaussian_moment(x, order: float):
+    r"""GW moment of the standard normal density, :math:`G_n(x) = \int_x^\infty (z-x)^n\phi(z)\,dz`.
+
+    .. math::
+        G_n(x) = \frac{\Gamma(n+1)}{\sqrt{2\pi}}\,e^{-x^2/4}\,D_{-n-1}(x)
+
+    The parabolic-cylinder form (:func:`scipy.special.pbdv`) is exact to about 1e-14 for
+    integer :math:`n` and :math:`x \ge -35`; for other orders SciPy's :math:`D_\nu` loses
+    up to 1e-9 (e.g. :math:`n = 3/2` near :math:`x = 6`), so those, and :math:`x < -35`
+    where the form overflows, use :func:`~asperity.heights.base.gw_moment_quadrature`
+    (about 1e-14).
+
+    Parameters
+    ----------
+    x : ndarray
+        Separations (any shape), finite.
+    order : float
+        :math:`n > -1`.
+
+    Returns
+    -------
+    ndarray
+        :math:`G_n(x)`, shape of ``x``.
+
+    References
+    ----------
+    Greenwood & Williamson (1966); Abramowitz & Stegun 19.5.3 (integral of :math:`D_\nu`).
+    """
+    x = np.asarray(x, dtype=float)
+    k = float(order)
+    closed = (x >= -35.0) & (k == round(k))
+    out = np.empty(x.shape)
+    if np.any(closed):
+        D, _ = special.pbdv(-k - 1.0, x[closed])
+        out[closed] = special.gamma(k + 1.0) * np.exp(-0.25 * x[closed] ** 2) * D / _SQRT_2PI
+    if not np.all(closed):
+        out[~closed] = gw_moment_quadrature(GAUSSIAN, x[~closed], k)
+    return out
