@@ -350,7 +350,8 @@ ALIASES = {
 NAN_OK = {"mu", "pressure", "d", "pull_off", "d_m", "area_fraction", "nominal_area",
           # a cycle's pull-off separation where there is none, its friction at zero load where the force
           # keeps its sign; the approach of a periodic boundary-element cell (documented in their records)
-          "d_pull_off", "d_pull_off_m", "friction_zero_load", "friction_zero_load_N", "separation", "sep_bem_m"}
+          "d_pull_off", "d_pull_off_m", "friction_zero_load", "friction_zero_load_N", "separation", "sep_bem_m",
+          "correlation"}  # a fit's correlation where undetermined (asperity.fit.FitResult)
 #: ... and infinite: mu, pressure (above), and a cycle's spring stiffness (inf: displacement control).
 INF_OK = {"mu", "pressure", "stiffness", "stiffness_N_m"}
 

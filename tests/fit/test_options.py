@@ -103,7 +103,7 @@ def test_joint_names_copies_and_shares():
         fit_joint([a, b], "amontons", shared=["nope"])
     with pytest.raises(ValueError, match="one model .* for all 2 data sets or one per data set"):
         fit_joint([a, b], ["amontons"])
-    with pytest.raises(ValueError, match="non-empty sequence"):
+    with pytest.raises(ValueError, match="non-empty list"):
         fit_joint(a, "amontons")
 
 
@@ -124,3 +124,28 @@ def test_get_model_registry():
     assert get_model("JKR").name == "jkr"
     m = get_model("gw")
     assert get_model(m) is m
+
+
+def test_option_types_are_named_errors():
+    """Options of a wrong type are errors naming the option (found by tests/test_fuzz_api.py)."""
+    from asperity.fit import compare_models, fit_friction_load, fit_joint
+    from asperity.fit.data import friction_load_data
+
+    P = np.linspace(0.5, 5.0, 8)
+    data = friction_load_data(P, 0.3 * (P + 1.0))
+    for kwargs, error, needle in (({"vary": True}, TypeError, "^vary must be"), ({"fix": ["mu0"]}, TypeError, "^fix"),
+                                  ({"grid": None}, TypeError, "^grid"), ({"grid": -1}, ValueError, "^grid"),
+                                  ({"weights": None}, ValueError, "^weights"), ({"ci": 1}, ValueError, "^ci"),
+                                  ({"units": True}, TypeError, "^units")):
+        with pytest.raises(error, match=needle):
+            fit_friction_load(data, "amontons", **kwargs)
+    with pytest.raises(TypeError, match="^vary"):
+        compare_models(data, ["amontons", "cos"], vary=0.0)
+    with pytest.raises(TypeError, match="^models"):
+        compare_models(data, None)
+    with pytest.raises(TypeError, match="^shared"):
+        fit_joint([data, data], "amontons", shared=True)
+    with pytest.raises(ValueError, match="^datasets"):
+        fit_joint(None, "amontons")
+    assert fit_friction_load(data, "amontons", vary="mu0", fix={"P0": 1.0}).parameters["mu0"].value == \
+        pytest.approx(0.3, rel=1e-6)  # one name is a list of one

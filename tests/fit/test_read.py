@@ -113,15 +113,19 @@ def test_unreadable_files(tmp_path):
 
 
 def test_dataset_checks_its_arrays():
-    with pytest.raises(ValueError, match="same length"):
+    with pytest.raises(ValueError, match="^F must have the length of P"):  # the arguments' names
         friction_load_data([1.0, 2.0], [1.0])
+    with pytest.raises(ValueError, match="^force_err must have the length of force"):
+        pull_off_data([1.0, 2.0], force_err=[0.1])
+    with pytest.raises(TypeError, match="^physical must be"):
+        friction_load_data([1.0], [1.0], physical=None)
     with pytest.raises(ValueError, match="give the friction force F or the coefficient mu"):
         friction_load_data([1.0], [1.0], mu=[0.1])
-    with pytest.raises(ValueError, match="^x must be 1-D"):
+    with pytest.raises(ValueError, match="^P must be 1-D"):
         friction_load_data([[1.0]], [[1.0]])
-    with pytest.raises(ValueError, match="^y must be finite"):
+    with pytest.raises(ValueError, match="^P must be finite"):
         force_separation_data([1.0], [np.nan])
-    with pytest.raises(ValueError, match="^x must be a real number"):
+    with pytest.raises(ValueError, match="^P must be a real number"):
         friction_load_data([True], [1.0])
     with pytest.raises(ValueError, match="condition 'alpha' must have one value per row"):
         pull_off_data([1.0, 2.0], conditions={"alpha": [0.1]})

@@ -8,6 +8,7 @@ AIC only charges it 2 per extra parameter.
 
 from __future__ import annotations
 
+from .engine import parameter_names
 from .models import get_model
 from .read import as_dataset
 from .result import Comparison
@@ -86,13 +87,19 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
     H. Akaike, IEEE Trans. Autom. Control 19 (1974) 716; K. P. Burnham, D. R. Anderson, Model
     Selection and Multimodel Inference, Springer (2002).
     """
-    names = [models] if isinstance(models, str) else list(models)
+    names = [models] if isinstance(models, str) else models
+    if not isinstance(names, list | tuple) or not all(isinstance(n, str) for n in names):
+        raise TypeError(f"models must be a model name or a list of names, got {type(models).__name__}")
     if not names or len({str(m).lower() for m in names}) != len(names):
         raise ValueError(f"models must be a non-empty list of distinct names, got {models!r}")
     data = as_dataset(data, kind, units, drop_nan)
     built = [get_model(m, material=material, contact=contact) for m in names]
     for m in built:
         m.check(data)
+    vary = None if vary is None else parameter_names(vary, "vary")
+    for opt, value in (("fix", fix), ("start", start), ("bounds", bounds)):
+        if value is not None and not isinstance(value, dict):
+            raise TypeError(f"{opt} must be a dict of parameter name -> value, got {type(value).__name__}")
     options = {"vary": vary, "fix": fix, "start": start, "bounds": bounds}
     known = set().union(*(m.specs(data) for m in built))
     for opt, value in options.items():

@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import as_float_array
+from .._validation import as_float_array, check_bool, check_text
 
 __all__ = ["KINDS", "MAX_ROWS", "Dataset", "friction_load_data", "force_separation_data", "pull_off_data"]
 
@@ -156,6 +156,22 @@ def _vector(value, name) -> np.ndarray:
     return arr
 
 
+def _columns(physical, name, required=1, **columns) -> tuple:
+    """The columns (None stays None) as 1-D float arrays of one length, ``physical`` and ``name``
+    checked: errors name the user's arguments (``P``, ``F``, ``force_err``, ...); the first
+    ``required`` columns may not be None."""
+    out = {k: None if v is None and i >= required else _vector(v, k)
+           for i, (k, v) in enumerate(columns.items())}
+    given = {k: v for k, v in out.items() if v is not None}  # the first (x, or the forces) is required
+    first = next(iter(given))
+    for k, v in given.items():
+        if v.size != given[first].size:
+            raise ValueError(f"{k} must have the length of {first} ({given[first].size}), got {v.size}")
+        if k.endswith("_err") and np.any(v <= 0):
+            raise ValueError(f"{k} (uncertainty) must be > 0 in every row, got min {v.min():g}")
+    return (*out.values(), check_bool(physical, "physical"), check_text(name, "name"))
+
+
 def friction_load_data(P, F=None, *, mu=None, F_err=None, mu_err=None, P_err=None, physical=False,
                        name="friction") -> Dataset:
     r"""A friction-versus-load data set from arrays: :math:`F` (or :math:`\mu`) at loads :math:`P`.
@@ -190,6 +206,8 @@ def friction_load_data(P, F=None, *, mu=None, F_err=None, mu_err=None, P_err=Non
         raise ValueError("give the friction force F or the coefficient mu (one of them)")
     if F is None and F_err is not None or mu is None and mu_err is not None:
         raise ValueError("F_err goes with F and mu_err with mu")
+    P, F, mu, F_err, mu_err, P_err, physical, name = _columns(physical, name, P=P, F=F, mu=mu, F_err=F_err,
+                                                              mu_err=mu_err, P_err=P_err)
     y, quantity, err = (F, "F", F_err) if mu is None else (mu, "mu", mu_err)
     return Dataset("friction", P, y, quantity, physical, y_err=err, x_err=P_err, name=name)
 
@@ -220,6 +238,7 @@ def force_separation_data(d, P, *, P_err=None, d_err=None, physical=False, name=
     ValueError
         If an array is invalid (see :class:`Dataset`).
     """
+    d, P, P_err, d_err, physical, name = _columns(physical, name, 2, d=d, P=P, P_err=P_err, d_err=d_err)
     return Dataset("force", d, P, "P", physical, y_err=P_err, x_err=d_err, name=name)
 
 
@@ -250,6 +269,10 @@ def pull_off_data(force, *, force_err=None, conditions=None, physical=False, nam
     ValueError
         If an array is invalid (see :class:`Dataset`).
     """
-    force = _vector(force, "force")
+    force, force_err, physical, name = _columns(physical, name, force=force, force_err=force_err)
+    if np.any(force <= 0):
+        raise ValueError(f"force (pull-off forces) must be > 0 (magnitudes), got min {force.min():g}")
+    if conditions is not None and not isinstance(conditions, dict):
+        raise TypeError(f"conditions must be a dict of name -> one value per force, got {type(conditions).__name__}")
     return Dataset("pull_off", np.arange(force.size, dtype=float), force, "pull_off", physical, y_err=force_err,
                    conditions=conditions or {}, name=name)

@@ -45,7 +45,7 @@ from .._optional import require
 from .data import Dataset
 from .models import FitModel, ParameterSpec
 
-__all__ = ["WEIGHTS", "LOSSES", "PENALTY", "Term", "GlobalParameter", "Problem", "build_problem"]
+__all__ = ["WEIGHTS", "LOSSES", "PENALTY", "Term", "GlobalParameter", "Problem", "build_problem", "parameter_names"]
 
 #: Weighting choices.
 WEIGHTS = ("auto", "column", "relative", "none")
@@ -228,11 +228,32 @@ class Problem:
         return params
 
 
+def parameter_names(option, name: str) -> list[str]:
+    """``vary``/``shared`` (named ``name``): one parameter name or a list, tuple or set of names, as a list.
+
+    Raises
+    ------
+    TypeError
+        For anything else, naming ``name``.
+    """
+    names = [option] if isinstance(option, str) else option
+    if not isinstance(names, list | tuple | set | frozenset) or not all(isinstance(k, str) for k in names):
+        raise TypeError(f"{name} must be a parameter name or a list of names, got {type(option).__name__} "
+                        f"{option!r:.60}")
+    return list(names)
+
+
 def _expand(option, name: str, params: dict, base_names: dict) -> dict:
     """User keys (global names, or a base name meaning every copy) -> global names."""
     if option is None:
         return {}
-    items = option.items() if isinstance(option, dict) else ((k, None) for k in option)
+    if name == "vary":
+        items = ((k, None) for k in parameter_names(option, name))
+    elif isinstance(option, dict):
+        items = option.items()
+    else:
+        raise TypeError(f"{name} must be a dict of parameter name -> value, got {type(option).__name__} "
+                        f"{option!r:.60}")
     out = {}
     for key, value in items:
         key = str(key)
@@ -260,7 +281,7 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
     terms, params, base_names = [], {}, {}
     joint = len(datasets) > 1
     share_all = shared is None
-    shared = set() if shared is None else {str(s) for s in shared}
+    shared = set() if shared is None else set(parameter_names(shared, "shared"))
     for i, (data, model) in enumerate(zip(datasets, models, strict=True)):
         model.check(data)
         names = {}

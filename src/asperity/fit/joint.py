@@ -7,9 +7,6 @@ The options are those of :mod:`asperity.fit.api`.
 
 from __future__ import annotations
 
-import os
-
-from .data import Dataset
 from .models import get_model
 from .read import as_dataset
 from .result import FitResult
@@ -86,14 +83,17 @@ def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=
     ----------
     M. Newville et al., LMFIT (Parameters shared between data sets).
     """
-    if isinstance(datasets, Dataset | str | os.PathLike) or not len(datasets):
-        raise ValueError("datasets must be a non-empty sequence of Datasets or paths")
-    datasets = [as_dataset(d, None, units, drop_nan) for d in datasets]
+    if not isinstance(datasets, list | tuple) or not datasets:
+        raise ValueError(f"datasets must be a non-empty list of Datasets or paths, got {type(datasets).__name__}")
+    try:
+        datasets = [as_dataset(d, None, units, drop_nan) for d in datasets]
+    except ValueError as err:
+        raise ValueError(f"datasets: {err}") from None
     n = len(datasets)
     models = [models] * n if isinstance(models, str) or not hasattr(models, "__len__") else list(models)
     contacts = list(contact) if isinstance(contact, list | tuple) else [contact] * n
     if len(models) != n or len(contacts) != n:
-        raise ValueError(f"give one model (and contact) for all {n} data sets or one per data set")
+        raise ValueError(f"models: give one model (and contact) for all {n} data sets or one per data set")
     built = [get_model(m, material=material, contact=c) for m, c in zip(models, contacts, strict=True)]
     return fit_problem(datasets, built, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds, expr=expr,
                 weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts)

@@ -133,6 +133,8 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
     ValueError
         For every problem listed in the module docstring, naming the row and column.
     """
+    if units is not None and not isinstance(units, dict):
+        raise TypeError(f"units must be a dict of role -> unit (e.g. {{'load': 'nN'}}), got {type(units).__name__}")
     units = dict(units or {})
     for key in units:
         if key not in ("load", "friction", "separation"):
@@ -195,7 +197,7 @@ def _read_text(path):
         with open(name, "rb") as fh:
             raw = fh.read(64 * 1024 * 1024 + 1)
     except OSError as err:
-        raise ValueError(f"cannot read data file {name!r}: {err.strerror or err}") from None
+        raise ValueError(f"path: cannot read data file {name!r}: {err.strerror or err}") from None
     if len(raw) > 64 * 1024 * 1024:
         raise ValueError(f"{shown}: larger than 64 MB; not a data file of at most {MAX_ROWS} rows")
     try:
@@ -275,7 +277,7 @@ def _kind(columns, kind, name):
         raise ValueError(f"{name}: ambiguous columns: both a friction force ({columns['friction'][3]!r}) and a "
                          f"coefficient ({columns['mu'][3]!r}); keep one")
     if kind is not None:
-        if kind not in KINDS:
+        if not isinstance(kind, str) or kind not in KINDS:
             raise ValueError(f"kind must be one of {', '.join(KINDS)}, got {kind!r}")
         if kind not in found:
             need = {"friction": "a load and a friction (F, mu, friction [nN])", "force":
@@ -357,6 +359,10 @@ def as_dataset(data, kind=None, units=None, drop_nan=False) -> Dataset:
     ValueError
         For data of another kind, anything but a Dataset or a path, or a file :func:`read_data` refuses.
     """
+    if kind is not None and (not isinstance(kind, str) or kind not in KINDS):
+        raise ValueError(f"kind must be one of {', '.join(KINDS)}, got {kind!r:.60}")
+    if units is not None and not isinstance(units, dict):
+        raise TypeError(f"units must be a dict of role -> unit (e.g. {{'load': 'nN'}}), got {type(units).__name__}")
     if isinstance(data, Dataset):
         if kind is not None and data.kind != kind:
             raise ValueError(f"expected {_KIND_NAMES[kind]} data, got {_KIND_NAMES[data.kind]} data ({data.name})")

@@ -16,8 +16,9 @@ import numpy as np
 from scipy import stats
 
 from .._optional import require
+from .._validation import check_integer
 from .._warnings import AsperityWarning
-from .engine import Problem, build_problem
+from .engine import LOSSES, WEIGHTS, Problem, build_problem
 from .result import FitResult, ParameterEstimate
 from .uncertainty import (
     central_jacobian,
@@ -33,6 +34,8 @@ __all__ = ["CI_METHODS", "RESTARTS", "run", "fit_problem", "grid_for", "suspicio
 
 #: Interval methods.
 CI_METHODS = ("auto", "wald", "profile")
+#: Most points of the fitted curve's grid (``grid=``).
+MAX_GRID = 10**5
 _LN10 = math.log(10.0)
 
 
@@ -161,7 +164,15 @@ def restart_points(params):
 
 def fit_problem(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
                 weights="auto", loss="linear", ci="auto", grid=200, restarts="auto") -> FitResult:
-    """Build the problem of ``datasets`` and ``models`` (:func:`~asperity.fit.engine.build_problem`); fit it."""
+    """Build the problem of ``datasets`` and ``models`` (:func:`~asperity.fit.engine.build_problem`); fit it.
+
+    The options are checked here, before any work: a ValueError or TypeError names the option.
+    """
+    for option, value, choices in (("weights", weights, WEIGHTS), ("loss", loss, LOSSES), ("ci", ci, CI_METHODS),
+                                   ("restarts", restarts, RESTARTS)):
+        if not isinstance(value, str) or value not in choices:
+            raise ValueError(f"{option} must be one of {', '.join(choices)}, got {value!r:.60}")
+    grid = check_integer(grid, "grid", 2, MAX_GRID)
     problem = build_problem(datasets, models, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds,
                             expr=expr, weights=weights, loss=loss)
     return run(problem, ci=ci, grid=grid, restarts=restarts)
