@@ -390,3 +390,24 @@ def check_overflow(result, name: str, limit, value):
         raise ValueError(f"{name} must be <= {lim:.6g} here (beyond, the result overflows double precision), "
                          f"got {got!r}")
     return result
+
+
+#: Image formats the plotting functions write (matplotlib's Agg, PDF, SVG and PS back ends).
+IMAGE_FORMATS = ("png", "pdf", "svg", "svgz", "eps", "ps", "jpg", "jpeg", "tif", "tiff", "webp")
+
+
+def check_image(path, fmt=None, name: str = "path") -> tuple[str, str]:
+    """An image file name and its format: ``fmt`` (a string of :data:`IMAGE_FORMATS`) or the
+    extension of ``path`` (png without one), as ``(path, fmt)``; errors name ``name`` or ``fmt``."""
+    import os
+
+    path = check_path(path, name)
+    if fmt is None:
+        fmt, what = os.path.splitext(path)[1][1:].lower() or "png", f"{name} (its extension)"
+    elif isinstance(fmt, str):
+        fmt, what = fmt.lower(), "fmt"
+    else:
+        raise TypeError(f"fmt must be an image format name (a string), got {type(fmt).__name__}")
+    if fmt not in IMAGE_FORMATS:
+        raise ValueError(f"{what}: {fmt!r} is not an image format; give one of {', '.join(IMAGE_FORMATS)}")
+    return path, fmt

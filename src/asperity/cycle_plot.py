@@ -77,6 +77,15 @@ def plot_cycle(result, ax=None, *, title=None):
     asperity._optional.MissingDependency
         If matplotlib is not installed (``pip install 'asperity[plot]'``).
     """
+    from .cycle_result import CycleResult
+    from .physical_cycle import PhysicalCycle
+
+    if not isinstance(result, CycleResult | PhysicalCycle):
+        raise TypeError(f"result must be a CycleResult or PhysicalCycle (asperity.cycle), got {type(result).__name__}")
+    if ax is not None and not callable(getattr(ax, "fill_between", None)):
+        raise TypeError(f"ax must be matplotlib Axes, got {type(ax).__name__}")
+    if title is not None and not isinstance(title, str):
+        raise TypeError(f"title must be a string, got {type(title).__name__}")
     require("matplotlib", purpose="plotting a cycle", extra="plot")
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure

@@ -11,6 +11,7 @@ import numpy as np
 
 from .._atomic import atomic_path
 from .._optional import require
+from .._validation import check_image
 
 __all__ = ["plot_fit"]
 
@@ -42,6 +43,12 @@ def plot_fit(result, path=None, *, fmt=None):
     asperity._optional.MissingDependency
         Without matplotlib.
     """
+    from .result import FitResult
+
+    if not isinstance(result, FitResult):
+        raise TypeError(f"result must be an asperity.fit FitResult, got {type(result).__name__}")
+    if path is not None:
+        path, fmt = check_image(path, fmt)
     require("matplotlib", purpose="plotting a fit", extra="plot")
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
@@ -75,9 +82,6 @@ def plot_fit(result, path=None, *, fmt=None):
         bottom.set_ylabel(f"residual ({result.weights[k]})")
     fig.suptitle(f"{result.model}: chi-square {result.chisqr:.4g}, AIC {result.aic:.4g}", fontsize="medium")
     if path is not None:
-        import os
-
-        fmt = fmt or os.path.splitext(os.fspath(path))[1][1:].lower() or "png"
         with atomic_path(path) as tmp:
             fig.savefig(tmp, dpi=150, format=fmt)
     return fig

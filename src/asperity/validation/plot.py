@@ -6,7 +6,9 @@ import os
 
 import numpy as np
 
+from .._atomic import atomic_path
 from .._optional import require
+from .._validation import check_image
 
 __all__ = ["plot_validation"]
 
@@ -33,11 +35,16 @@ def plot_validation(result, path, fmt: str | None = None) -> None:
     asperity._optional.MissingDependency
         Without matplotlib (``pip install 'asperity[plot]'``).
     """
+    from .compare import SurfaceValidation
+
+    if not isinstance(result, SurfaceValidation):
+        raise TypeError(f"result must be a SurfaceValidation (asperity.validation.validate_surface), got "
+                        f"{type(result).__name__}")
+    path, fmt = check_image(path, fmt)
     require("matplotlib", purpose="plotting a validation", extra="plot")
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    fmt = fmt or (os.path.splitext(os.fspath(path))[1][1:].lower() or "png")
     t, A0 = result.columns(), result.bem.nominal_area
     fig = Figure(figsize=(11, 3.6), layout="constrained")
     FigureCanvasAgg(fig)
@@ -69,4 +76,5 @@ def plot_validation(result, path, fmt: str | None = None) -> None:
     fig.suptitle(f"{os.path.basename(str(src))}: {result.parameters['material']}, grid "
                  f"{result.bem.nb_grid_pts[0]}x{result.bem.nb_grid_pts[1]}, "
                  f"{'periodic' if result.bem.periodic else 'free'} boundaries")
-    fig.savefig(path, dpi=150, format=fmt)
+    with atomic_path(path) as tmp:  # nothing is left behind if drawing fails
+        fig.savefig(tmp, dpi=150, format=fmt)
