@@ -398,8 +398,6 @@ KNOWN_GAPS = {
     "asperity.jackson_green_fits.jg_load": "a huge omega_star overflows with a RuntimeWarning",
     "asperity.maugis_dugdale_load.md_contact_radius": "a huge P overflows with a RuntimeWarning",
     "asperity.nix_gao.ng_scaled_interference": "a huge omega overflows with a RuntimeWarning",
-    "asperity.sweeps.run.sweep": "out of a wrong type: a TypeError without the parameter's name",
-    "asperity.sweeps.spec.read_points": "a path of a wrong type: an error without the parameter's name",
     "asperity.validation.compare.validate_surface": "huge or tiny loads overflow with a RuntimeWarning",
     "asperity.validation.surfaces.synthetic_surface": "a boolean seed or a huge size: errors without the name",
     "asperity.heights.empirical.Empirical": "sd as a list (TypeError without the name), a huge sd overflows",

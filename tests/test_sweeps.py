@@ -279,3 +279,17 @@ def test_a_killed_worker_does_not_lose_the_sweep(cluster, serial, monkeypatch):
     assert killed
     assert_same(ds, serial)
     cluster.wait_for_workers(2, timeout=60)  # the nanny restarts it for the next test
+
+
+def test_out_and_points_of_a_wrong_type_are_named(tmp_path):
+    """Found by tests/test_fuzz_api.py: out and points name themselves, before any work."""
+    pytest.importorskip("xarray")
+    base = dict(alpha=[0.01, 0.02], beta=1000.0, gamma=1e-3, P=[1.0], scheduler="serial")
+    for kwargs, error, needle in (({"out": True}, TypeError, "^out must be a file name"),
+                                  ({"out": tmp_path}, ValueError, "^out = .* is a directory"),
+                                  ({"points": True, "alpha": None}, TypeError, "^points must be a dict"),
+                                  ({"points": str(tmp_path), "alpha": None}, ValueError, "^points: path"),
+                                  ({"points": {"a": [1.0]}, "alpha": None}, ValueError, r"\['a'\] in points")):
+        with pytest.raises(error, match=needle):
+            sweeps.sweep(**{**base, **kwargs})
+    assert not list(tmp_path.iterdir())

@@ -26,11 +26,12 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+import os
 from dataclasses import dataclass
 
 import numpy as np
 
-from .._validation import as_float_array
+from .._validation import as_float_array, check_path
 from .._version import __version__
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 
@@ -227,11 +228,21 @@ def make_spec(parameters: dict, *, points=None, P=None, d=None, chunk_sets=None)
         of unequal lengths, or a parameter both in ``points`` and given separately.
     """
     given = {k: v for k, v in parameters.items() if v is not None}
-    point_cols = {} if points is None else dict(read_points(points) if isinstance(points, str) else points)
+    if points is None or isinstance(points, dict):
+        point_cols = dict(points or {})
+    elif isinstance(points, str | os.PathLike):
+        try:
+            point_cols = read_points(points)
+        except (TypeError, ValueError) as err:
+            raise type(err)(f"points: {err}") from None
+    else:
+        raise TypeError(f"points must be a dict of parameter -> values or the path of a CSV file, got "
+                        f"{type(points).__name__}")
     names = set(given) | set(point_cols)
     unknown = names - set(MODEL_NAMES) - set(PHYSICAL_NAMES)
     if unknown:
-        raise ValueError(f"unknown sweep parameter(s) {sorted(unknown)}; known: {', '.join(MODEL_NAMES)} "
+        raise ValueError(f"unknown sweep parameter(s) {sorted(unknown)}"
+                         f"{' in points' if set(point_cols) & unknown else ''}; known: {', '.join(MODEL_NAMES)} "
                          f"(dimensionless) or {', '.join(PHYSICAL_NAMES)} (physical)")
     kind = "physical" if names & set(PHYSICAL_NAMES) else "model"
     allowed = PHYSICAL_NAMES if kind == "physical" else MODEL_NAMES
@@ -286,6 +297,7 @@ def read_points(path: str) -> dict[str, np.ndarray]:
     """
     import csv
 
+    path = check_path(path, "path")
     try:
         with open(path, newline="") as fh:
             rows = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
