@@ -107,3 +107,15 @@ def test_bad_input(func, kwargs, match):
         cos.cos_lambda(0.99)
     with pytest.raises(ValueError, match=r"^lam \(Maugis parameter\) must be >= 0"):
         cos.cos_pull_off_hat(-1.0)
+
+
+def test_shapes_that_do_not_broadcast_are_named():
+    """Found by tests/test_fuzz_api.py (random runs): a named error, not NumPy's message."""
+    for call, needle in ((lambda: cos.cos_contact_radius([1.0, 2.0], a0=1.0, Pc=[-1.0, -1.0, -1.0], alpha_t=0.5),
+                          "^P, Pc, alpha_t must have shapes that broadcast"),
+                         (lambda: cos.cos_contact_radius([1.0, 2.0], a0=[1.0, 1.0, 1.0], Pc=-1.0, alpha_t=0.5),
+                          "^a0, P must have shapes that broadcast"),
+                         (lambda: cos.cos_friction([1.0, 2.0], F0=[1.0, 1.0, 1.0], Pc=-1.0, alpha_t=0.5),
+                          "^F0, P must have shapes that broadcast")):
+        with pytest.raises(ValueError, match=needle):
+            call()

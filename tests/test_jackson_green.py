@@ -181,7 +181,7 @@ def test_broadcasting():
     (lambda: jg.jg_yield_coefficient(0.5), r"nu"),
     (lambda: jg.jg_area(1.0, 0.06), r"e_y .*\(0, 0.05\]"),
     (lambda: jg.jg_area(1.0, 0.0), r"e_y \(yield strain S_y/E\*\) must lie in \(0, 0.05\]"),
-    (lambda: jg.jg_load(-1.0, 1e-3, 0.3), r"omega_star must be >= 0"),
+    (lambda: jg.jg_load(-1.0, 1e-3, 0.3), r"omega_star must lie in \[0, 1e\+12\]"),
     (lambda: jg.jg_load(float("nan"), 1e-3, 0.3), r"omega_star must be finite"),
     (lambda: jg.jg_load(True, 1e-3, 0.3), r"omega_star must be a real number"),
     (lambda: jg.jg_critical_interference(1.0, -1.0, 1.0, 0.3), r"E_star must be > 0"),
@@ -199,3 +199,23 @@ def test_bad_input(call, match):
 def test_critical_values_that_overflow_are_named_errors(func, kwargs):
     with pytest.raises(ValueError, match="overflows double precision for .*(E_star|S_y)"):
         func(nu=0.3, **kwargs)  # and no RuntimeWarning before it (an error under pytest)
+
+
+def test_huge_interferences_and_hardnesses_are_named_errors():
+    """Found by tests/test_fuzz_api.py: overflow is a named error, never a RuntimeWarning."""
+    from asperity.cos import cos_friction
+    from asperity.elastic_plastic import critical_penetration
+    from asperity.maugis_dugdale_load import md_contact_radius
+    from asperity.nix_gao import ng_scaled_interference
+
+    for call, needle in ((lambda: jgf.jg_load(1e300, 1e-3, 0.3), r"omega_star must lie in \[0, 1e\+12\]"),
+                         (lambda: jgf.jg_area(1e13, 1e-3), r"omega_star must lie in"),
+                         (lambda: critical_penetration(0.05, 0.3, 1e200), "H_over_E"),
+                         (lambda: md_contact_radius([1e300], R=20e-9, w=0.1, E_star=1e11, lam=1.0), r"^P"),
+                         (lambda: md_contact_radius([1e300], R=1e-300, w=1e-10, E_star=1e11, lam=1.0), r"P = "),
+                         (lambda: ng_scaled_interference([1e154, 1e300], 1e-300, 2.0), "omega"),
+                         (lambda: cos_friction(100.0, F0=1.2e308, Pc=-1.0, alpha_t=0.3), "F0")):
+        with pytest.raises(ValueError, match=needle):
+            call()
+    assert float(jgf.jg_load(jgf.OMEGA_STAR_MAX, 1e-3, 0.3)) > 0  # finite up to the limit
+    assert jgf.jg_area([], 1e-3).shape == jgf.jg_load_fit([], 1e-3, 0.3).shape == (0,)  # empty in, empty out

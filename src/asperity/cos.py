@@ -59,7 +59,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_positive, check_range
+from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, check_range
 
 __all__ = ["ALPHA_T_MAX", "cos_contact_radius", "cos_friction", "cos_lambda", "cos_alpha", "cos_pull_off_hat",
            "cos_radius_hat"]
@@ -75,6 +75,7 @@ def _shape(P, Pc, alpha_t):
     if np.any(Pc >= 0):
         raise ValueError(f"Pc (critical load, the pull-off load) must be < 0, got {Pc!r}")
     alpha_t = check_range(alpha_t, "alpha_t", 0.0, 1.0)
+    check_broadcast(P=P, Pc=Pc, alpha_t=alpha_t)
     ratio = P / Pc
     if np.any(ratio > 1.0 + 1e-15):
         raise ValueError("P (load) must be >= Pc (the critical load, negative): no contact below it")
@@ -122,7 +123,9 @@ def cos_contact_radius(P, *, a0, Pc, alpha_t):
     Carpick, Ogletree & Salmeron (1999), Eq (7).
     """
     a0 = check_positive(a0, "a0")
-    return a0 * _shape(P, Pc, alpha_t) ** (2.0 / 3.0)
+    shape = _shape(P, Pc, alpha_t)
+    check_broadcast(a0=a0, P=shape)
+    return a0 * shape ** (2.0 / 3.0)
 
 
 def cos_friction(P, *, F0, Pc, alpha_t):
@@ -163,7 +166,12 @@ def cos_friction(P, *, F0, Pc, alpha_t):
     Carpick, Ogletree & Salmeron (1999), Eq (7); Bowden & Tabor, :math:`F = \tau A`.
     """
     F0 = check_positive(F0, "F0")
-    return F0 * _shape(P, Pc, alpha_t) ** (4.0 / 3.0)
+    F0 = check_positive(F0, "F0")
+    shape = _shape(P, Pc, alpha_t)
+    check_broadcast(F0=F0, P=shape)
+    with np.errstate(over="ignore"):
+        F = F0 * shape ** (4.0 / 3.0)
+    return check_finite_result(F, "the friction force", F0=F0, P=P, Pc=Pc)
 
 
 def cos_lambda(alpha_t):

@@ -54,13 +54,14 @@ References
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
 from scipy import optimize
 
-from ._validation import as_float_array, check_nonnegative, check_positive, scalar
+from ._validation import as_float_array, check_finite_result, check_nonnegative, check_positive, scalar
 from .asperity_law import AsperityLaw, ModelParameters
 from .heights import GAUSSIAN, HeightDistribution
 from .jackson_green import E_Y_MAX, OMEGA_T, jg_yield_coefficient, jg_yield_from_hardness
@@ -131,8 +132,14 @@ def critical_penetration(alpha, nu, H_over_E, h_star_over_sigma=0.0) -> float:
     H = _scalar(H_over_E, "H_over_E", positive=True)
     h = _scalar(h_star_over_sigma, "h_star_over_sigma", positive=False)
     C = float(jg_yield_coefficient(float(scalar(as_float_array(nu, "nu"), "nu"))))
-    u_c0 = (0.5 * np.pi * C * H / 2.84) ** 2 / alpha**2
-    return float(ng_interference(1.0, u_c0, h))
+    with np.errstate(all="ignore"):
+        u_c0 = (0.5 * np.pi * C * np.float64(H) / 2.84) ** 2 / np.float64(alpha) ** 2
+        if not 0.0 < u_c0 < math.inf:  # under- or overflow
+            raise ValueError(f"the critical penetration leaves double precision for alpha = {alpha!r}, "
+                             f"H_over_E = {H!r}: give values of physical size")
+        u_c = ng_interference(1.0, u_c0, h)
+    return float(check_finite_result(u_c, "the critical penetration", alpha=alpha, H_over_E=H,
+                                     h_star_over_sigma=h))
 
 
 def plastic_fraction(d, u_c, heights: HeightDistribution = GAUSSIAN):

@@ -38,7 +38,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import optimize
 
-from ._validation import as_float_array
+from ._validation import as_float_array, check_broadcast, check_finite_result
 from .jackson_green import (
     OMEGA_T,
     jg_area_exponent,
@@ -52,10 +52,15 @@ from .jackson_green import (
 __all__ = ["jg_area_fit", "jg_area", "jg_load_fit", "jg_load_transition", "jg_load"]
 
 
+#: Largest interference over the critical one the fits take: far beyond their range (omega* <= ~110
+#: in Jackson & Green's finite elements), and the fits stay finite up to it.
+OMEGA_STAR_MAX = 1e12
+
+
 def _omega_star(omega_star):
     w = as_float_array(omega_star, "omega_star", allow_empty=True)
-    if np.any(w < 0):
-        raise ValueError(f"omega_star must be >= 0 (valid range 0 <= omega_star < inf), got {omega_star!r}")
+    if np.any((w < 0) | (w > OMEGA_STAR_MAX)):
+        raise ValueError(f"omega_star must lie in [0, {OMEGA_STAR_MAX:g}], got {omega_star!r}")
     return w
 
 
@@ -133,6 +138,8 @@ def jg_area(omega_star, e_y):
     Jackson & Green (2005), contact area and the transition at 1.9.
     """
     w, e_y = np.broadcast_arrays(_omega_star(omega_star), jg_check_yield_strain(e_y))
+    if w.size == 0:  # no interference: nothing to evaluate (e_y broadcast to empty is not "no e_y")
+        return np.zeros(w.shape)
     return np.where(w <= OMEGA_T, w, jg_area_fit(np.maximum(w, OMEGA_T), e_y))
 
 
@@ -177,6 +184,8 @@ def jg_load_fit(omega_star, e_y, nu):
     """
     w = _omega_star(omega_star)
     C = jg_yield_coefficient(nu)
+    if w.size == 0:
+        return np.zeros(w.shape)
     hardness = jg_hardness_ratio(jg_radius_ratio(jg_area(w, e_y), e_y, nu))
     elastic = np.exp(-0.25 * w ** (5.0 / 12.0)) * w**1.5
     plastic = 4.0 * hardness / C * (1.0 - np.exp(-(w ** (5.0 / 9.0)) / 25.0)) * w
@@ -280,10 +289,14 @@ def jg_load(omega_star, e_y, nu):
     ----------
     Jackson & Green (2005), load; docs/plasticity.md (the switch at the crossing).
     """
-    w, e_y, nu = np.broadcast_arrays(_omega_star(omega_star), jg_check_yield_strain(e_y), jg_check_poisson(nu))
+    w, e_y, nu = _omega_star(omega_star), jg_check_yield_strain(e_y), jg_check_poisson(nu)
+    check_broadcast(omega_star=w, e_y=e_y, nu=nu)
+    w, e_y, nu = np.broadcast_arrays(w, e_y, nu)
     if w.size == 0:
         return np.zeros(w.shape)
     pairs, index = np.unique(np.stack([e_y.ravel(), nu.ravel()]), axis=1, return_inverse=True)
     cross = np.array([_crossing(float(e), float(n)) for e, n in pairs.T])[index.ravel()].reshape(w.shape)
-    fit = jg_load_fit(np.maximum(w, cross), e_y, nu)
-    return np.where(w <= cross, w**1.5, fit)
+    with np.errstate(over="ignore", invalid="ignore"):
+        fit = jg_load_fit(np.maximum(w, cross), e_y, nu)
+        out = np.where(w <= cross, w**1.5, fit)
+    return check_finite_result(out, "P/P_c", omega_star=w)

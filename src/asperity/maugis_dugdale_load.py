@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_positive, scalar
+from ._validation import as_float_array, check_finite_result, check_positive, scalar
 from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
 
 __all__ = ["P_MAX", "md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force"]
@@ -227,7 +227,10 @@ def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     """
     R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
     P = as_float_array(P, "P", allow_empty=True)
-    A = md_solve_load(P / (np.pi * w * R), lam)[0]
+    with np.errstate(over="ignore"):
+        P_hat = P / (np.pi * w * R)
+    check_finite_result(P_hat, "the load P/(pi w R)", P=P, R=R, w=w)
+    A = md_solve_load(P_hat, lam)[0]
     return A * np.cbrt(np.pi * w * R * R / K)
 
 

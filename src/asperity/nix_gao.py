@@ -52,7 +52,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_nonnegative, check_positive
+from ._validation import check_finite_result, check_nonnegative, check_positive
 
 __all__ = ["ng_hardness", "ng_scaled_interference", "ng_interference", "ng_critical_interference"]
 
@@ -136,9 +136,9 @@ def ng_scaled_interference(omega, omega_c0, h_star):
     w = check_nonnegative(omega, "omega")
     w0 = check_positive(omega_c0, "omega_c0")
     hs = check_nonnegative(h_star, "h_star")
-    with np.errstate(invalid="ignore", divide="ignore"):
-        out = w * w / (w0 * (w + hs))
-    return np.where(w > 0, out, 0.0)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        out = np.where(w > 0, w / (w0 * (1.0 + hs / np.where(w > 0, w, 1.0))), 0.0)  # w^2/(w0 (w + h*))
+    return check_finite_result(out, "omega*", omega=w, omega_c0=w0, h_star=hs)
 
 
 def ng_interference(omega_star, omega_c0, h_star):
