@@ -214,3 +214,12 @@ def test_help_and_startup(capsys):
     """)
     res = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
     assert res.stdout.strip().splitlines()[-1] == "[]"
+
+
+@pytest.mark.parametrize("extra", [["--law", "jackson-green"], ["--heights", "exponential"], ["--hardness", "1GPa"],
+                                   ["--size-effect"], ["--heights", "weibull:skew=0.5", "--law", "elastic"]])
+def test_contact_options_without_a_contact_are_refused(capsys, line, extra):
+    """The law and height options of a physical contact are refused without one, never ignored."""
+    code, out, err = run(capsys, "fit", str(line), "--model", "amontons", *extra)
+    assert out == "" and one_line_error(code, err, "only to the rough-surface model with a physical contact")
+    assert all(option in err for option in extra if option.startswith("--"))  # each one named

@@ -24,6 +24,8 @@ from ._args import (
 
 #: The options that make a rough surface (--R alone is the tip radius of the single-asperity laws).
 SURFACE_ONLY = tuple(name for name in SURFACE_OPTIONS if name != "R")
+#: Options of the contact's per-asperity law and heights (argument names).
+CONTACT_ONLY = ("law", "hardness", "h_star", "size_effect", "plastic_threshold", "heights", "interaction")
 
 
 def _given(args, names) -> bool:
@@ -154,6 +156,13 @@ def _options(args):
     contact = material = None
     if _given(args, SURFACE_ONLY):  # a rough surface: the multi-asperity contact of gw
         contact = contact_from_args(args)
+    else:  # options only a physical rough-surface contact uses: refused, never ignored
+        unused = [f"--{n.replace('_', '-')}" for n in CONTACT_ONLY if getattr(args, n, None) not in (None, False)]
+        if unused:
+            verb = "applies" if len(unused) == 1 else "apply"
+            raise UsageError(f"{', '.join(unused)} {verb} only to the rough-surface model with a physical contact "
+                             "(--material/--E ... with --sigma-s, --R, --eta, --area or --surface FILE); "
+                             "the single-asperity laws and the dimensionless gw fit take none of them")
     if _given(args, BODY_OPTIONS):  # the bodies: E* of the single-asperity laws
         material = material_from_args(args)
     if args.R is not None:  # the tip radius of the single-asperity laws
