@@ -40,15 +40,11 @@ from typing import ClassVar
 import numpy as np
 
 from .._validation import as_float_array
-from .base import HeightDistribution, check_order
+from .base import check_order
 from .mixture import (
+    GaussianSum,
     mixture_moment,
-    mixture_panel_sums,
-    mixture_pdf,
-    mixture_pdf_derivative,
-    mixture_sf,
     mixture_stats,
-    mixture_weighted_sums,
 )
 from .samples import check_samples, read_samples, standardise
 
@@ -61,7 +57,7 @@ MIN_BANDWIDTH = 0.2
 
 
 @dataclass(frozen=True, repr=False)
-class Empirical(HeightDistribution):
+class Empirical(GaussianSum):
     r"""A Gaussian mixture of common width built from measured summit heights (module docstring).
 
     Build it with :meth:`from_samples` or :meth:`from_file`; the constructor takes the
@@ -213,30 +209,6 @@ class Empirical(HeightDistribution):
     def translates(self):
         """``(weights, centres, width)``: the estimate is a sum of one Gaussian kernel's translates."""
         return self._components[0], self._components[1], self.sd
-
-    def pdf(self, z):
-        """Density of the kernel mixture."""
-        return mixture_pdf(z, *self._components)
-
-    def pdf_derivative(self, z, order: int):
-        """First or second derivative of the density."""
-        if order not in (1, 2):
-            raise ValueError(f"order must be 1 or 2, got {order}")
-        return mixture_pdf_derivative(z, order, *self._components)
-
-    def sf(self, z):
-        """Survival function of the kernel mixture."""
-        return mixture_sf(z, *self._components)
-
-    def stats(self) -> tuple[float, float, float, float]:
-        """Mean (0), variance (1), skewness and kurtosis of the estimate (closed form)."""
-        return mixture_stats(*self._components)
-
-    def weighted_sums(self, d, u, weights, order: int = 0):
-        return mixture_weighted_sums(d, u, weights, order, *self._components)
-
-    def panel_sums(self, d, centers, offsets, weights, order: int = 0):
-        return mixture_panel_sums(d, centers, offsets, weights, order, *self._components)
 
     def moment(self, d, order):
         r"""GW moment :math:`F_n(\bar d)`: a sum of Gaussian closed forms over the kernels.

@@ -41,8 +41,8 @@ from .._validation import as_float_array, check_scalar_range
 from .base import HeightDistribution, check_order
 from .gaussian import GAUSSIAN, gaussian_moment
 
-__all__ = ["Mixture", "KernelGaussian", "mixture_pdf", "mixture_pdf_derivative", "mixture_sf", "mixture_moment",
-           "mixture_weighted_sums", "mixture_panel_sums", "mixture_stats", "FAST_WIDTH"]
+__all__ = ["Mixture", "GaussianSum", "KernelGaussian", "mixture_pdf", "mixture_pdf_derivative", "mixture_sf",
+           "mixture_moment", "mixture_weighted_sums", "mixture_panel_sums", "mixture_stats", "FAST_WIDTH"]
 
 _SQRT_2PI = math.sqrt(2.0 * math.pi)
 #: Narrowest component the unit quadrature panels of the fast (factorised) path resolve:
@@ -114,8 +114,40 @@ def _accumulate(out, parts, w, s):
     return scaled if out is None else [o + p for o, p in zip(out, scaled, strict=True)]
 
 
+class GaussianSum(HeightDistribution):
+    """A density that is a weighted sum of Gaussians (:class:`Mixture`, the kernel estimate
+    :class:`~asperity.heights.Empirical`): everything from ``self._components``, the tuple
+    ``(weights, means, deviations)`` a subclass sets, through the closed forms above."""
+
+    _components: tuple
+
+    def pdf(self, z):
+        """Density :math:`\\sum_i (w_i/s_i)\\varphi((z-m_i)/s_i)`."""
+        return mixture_pdf(z, *self._components)
+
+    def pdf_derivative(self, z, order: int):
+        """First or second derivative of the density."""
+        if order not in (1, 2):
+            raise ValueError(f"order must be 1 or 2, got {order}")
+        return mixture_pdf_derivative(z, order, *self._components)
+
+    def sf(self, z):
+        """Survival function :math:`\\sum_i w_i Q((z - m_i)/s_i)`."""
+        return mixture_sf(z, *self._components)
+
+    def stats(self) -> tuple[float, float, float, float]:
+        """Mean (0), variance (1), skewness and kurtosis in closed form."""
+        return mixture_stats(*self._components)
+
+    def weighted_sums(self, d, u, weights, order: int = 0):
+        return mixture_weighted_sums(d, u, weights, order, *self._components)
+
+    def panel_sums(self, d, centers, offsets, weights, order: int = 0):
+        return mixture_panel_sums(d, centers, offsets, weights, order, *self._components)
+
+
 @dataclass(frozen=True)
-class Mixture(HeightDistribution):
+class Mixture(GaussianSum):
     r"""Two Gaussian components, standardised to zero mean and unit variance (module docstring).
 
     The parameters may be given in any unit (e.g. the plateau and valley roughness of
@@ -177,30 +209,6 @@ class Mixture(HeightDistribution):
         narrow = min(sds)
         setattr_(self, "resolution", min(1.0, narrow))
         setattr_(self, "fast_sums", narrow >= FAST_WIDTH)
-
-    def pdf(self, z):
-        """Density :math:`\\sum_i (w_i/s_i)\\varphi((z-m_i)/s_i)`."""
-        return mixture_pdf(z, *self._components)
-
-    def pdf_derivative(self, z, order: int):
-        """First or second derivative of the density."""
-        if order not in (1, 2):
-            raise ValueError(f"order must be 1 or 2, got {order}")
-        return mixture_pdf_derivative(z, order, *self._components)
-
-    def sf(self, z):
-        """Survival function :math:`\\sum_i w_i Q((z - m_i)/s_i)`."""
-        return mixture_sf(z, *self._components)
-
-    def stats(self) -> tuple[float, float, float, float]:
-        """Mean (0), variance (1), skewness and kurtosis in closed form."""
-        return mixture_stats(*self._components)
-
-    def weighted_sums(self, d, u, weights, order: int = 0):
-        return mixture_weighted_sums(d, u, weights, order, *self._components)
-
-    def panel_sums(self, d, centers, offsets, weights, order: int = 0):
-        return mixture_panel_sums(d, centers, offsets, weights, order, *self._components)
 
     def moment(self, d, order):
         r"""GW moment :math:`F_n(\bar d) = \sum_i w_i s_i^n G_n((\bar d - m_i)/s_i)` (Gaussian closed forms).
