@@ -397,9 +397,6 @@ KNOWN_GAPS = {
     "asperity.validation.compare.validate_surface": "huge or tiny loads overflow with a RuntimeWarning",
     "asperity.validation.surfaces.synthetic_surface": "a boolean seed or a huge size: errors without the name",
     # found by ASPERITY_FUZZ_RANDOM=1 runs (the default, derandomized examples pass them):
-    **{f"asperity.nix_gao.{name}": "huge inputs overflow with a RuntimeWarning instead of a named error"
-       for name in ("ng_critical_interference", "ng_hardness", "ng_interference")},
-    "asperity.heights.empirical.Empirical": "sd as a list (TypeError without the name), a huge sd overflows",
     "asperity.heights.mixture.Mixture": "a component too narrow after standardising: the message names s1, s2, not "
                                         "the mean that moved it",
 }

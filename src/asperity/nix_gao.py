@@ -92,7 +92,10 @@ def ng_hardness(h, H0, h_star):
     Nix & Gao (1998), the depth dependence of hardness.
     """
     h = check_positive(h, "h")
-    return check_positive(H0, "H0") * np.sqrt(1.0 + check_nonnegative(h_star, "h_star") / h)
+    H0_, hs = check_positive(H0, "H0"), check_nonnegative(h_star, "h_star")
+    with np.errstate(all="ignore"):
+        out = H0_ * np.sqrt(1.0 + hs / h)
+    return check_finite_result(out, "the hardness", h=h, H0=H0_, h_star=hs)
 
 
 def ng_scaled_interference(omega, omega_c0, h_star):
@@ -175,8 +178,12 @@ def ng_interference(omega_star, omega_c0, h_star):
     ----------
     Nix & Gao (1998); the mapping :math:`h = \omega` (module docstring).
     """
-    x = check_nonnegative(omega_star, "omega_star") * check_positive(omega_c0, "omega_c0")
-    return 0.5 * (x + np.sqrt(x * x + 4.0 * x * check_nonnegative(h_star, "h_star")))
+    ws, w0, hs = (check_nonnegative(omega_star, "omega_star"), check_positive(omega_c0, "omega_c0"),
+                  check_nonnegative(h_star, "h_star"))
+    with np.errstate(all="ignore"):
+        x = ws * w0
+        out = 0.5 * (x + np.sqrt(x) * np.sqrt(x + 4.0 * hs))  # = (x + sqrt(x^2 + 4 x h*))/2, no x^2 overflow
+    return check_finite_result(out, "the interference", omega_star=ws, omega_c0=w0, h_star=hs)
 
 
 def ng_critical_interference(omega_c0, h_star):

@@ -39,7 +39,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from .._validation import as_float_array
+from .._validation import as_float_array, check_scalar_range
 from .base import check_order
 from .mixture import (
     GaussianSum,
@@ -100,18 +100,28 @@ class Empirical(GaussianSum):
     name: ClassVar[str] = "empirical"
 
     def __post_init__(self):
+        count = self.samples
+        if count is not None and (isinstance(count, bool) or not isinstance(count, int | np.integer) or count < 0):
+            raise TypeError(f"samples (the number of measured summits) must be a non-negative integer or None, "
+                            f"got {self.samples!r}")
+        if self.source is not None and not isinstance(self.source, str):
+            raise TypeError(f"source (the file the summits came from) must be a string or None, got {self.source!r}")
         m = as_float_array(self.means, "means").ravel()
         w = as_float_array(self.weights, "weights").ravel()
         if m.size != w.size or m.size < 1:
             raise ValueError(f"means and weights must have the same length >= 1, got {m.size} and {w.size}")
         if np.any(w < 0) or not w.sum() > 0:
             raise ValueError("weights must be >= 0 with a positive sum")
-        sd = float(as_float_array(self.sd, "sd"))
+        sd = check_scalar_range(self.sd, "sd", 0.0, 1e100, what="kernel width")
         if not sd > 0:
             raise ValueError(f"sd (kernel width) must be > 0, got {self.sd!r}")
         w = w / w.sum()
-        mean, var, _, _ = mixture_stats(w, m, np.full(m.size, sd))
-        scale = math.sqrt(var)
+        with np.errstate(all="ignore"):
+            mean, var, _, _ = mixture_stats(w, m, np.full(m.size, sd))
+        scale = math.sqrt(var) if math.isfinite(var) else math.inf
+        if not 0.0 < scale < math.inf:
+            raise ValueError(f"means and sd give a variance that overflows double precision (sd = {self.sd!r}): "
+                             "give heights of physical size")
         m = (m - mean) / scale
         sd = sd / scale
         setattr_ = object.__setattr__
