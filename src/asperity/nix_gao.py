@@ -182,7 +182,9 @@ def ng_interference(omega_star, omega_c0, h_star):
                   check_nonnegative(h_star, "h_star"))
     with np.errstate(all="ignore"):
         x = ws * w0
-        out = 0.5 * (x + np.sqrt(x) * np.sqrt(x + 4.0 * hs))  # = (x + sqrt(x^2 + 4 x h*))/2, no x^2 overflow
+        out = 0.5 * (x + np.sqrt(x * x + 4.0 * x * hs))
+        # where x^2 overflows, the same root factorised (exact for h* = 0 only in the form above)
+        out = np.where(np.isfinite(out), out, 0.5 * (x + np.sqrt(x) * np.sqrt(x + 4.0 * hs)))
     return check_finite_result(out, "the interference", omega_star=ws, omega_c0=w0, h_star=hs)
 
 

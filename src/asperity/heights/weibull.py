@@ -206,7 +206,8 @@ class Weibull(HeightDistribution):
 
     def sf(self, z):
         """Survival function :math:`e^{-w^c}` (1 below the support)."""
-        w = np.maximum(self._w(z), 0.0)
+        z = np.asarray(z, dtype=float)
+        w = np.where(z <= self.support[0], 0.0, np.maximum(self._w(z), 0.0))  # exactly 1 from the support's start
         return np.exp(-(w**self.c))
 
     def stats(self) -> tuple[float, float, float, float]:
