@@ -385,7 +385,8 @@ def path_bad_values(tmp: str) -> list:
     if not os.path.exists(existing_file):
         with open(existing_file, "w") as fh:
             fh.write("x")
-    return [None, 3.0, True, _Opaque(), {"a": 1}, b"\xff", tmp, ""]
+    # a bytes path (not UTF-8) inside tmp: accepted as a path or refused by name, never written elsewhere
+    return [None, 3.0, True, _Opaque(), {"a": 1}, os.fsencode(tmp) + b"/\xff", tmp, ""]
 
 
 # -- the contract ---------------------------------------------------------------------------------
