@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 
 from asperity import dmt, hertz, jkr
 from asperity import maugis_dugdale as md
+from asperity._maugis_dugdale_brackets import md_first_bracket
 
 
 def eq11_residual_mp(A, t, lam):
@@ -34,7 +35,7 @@ def test_first_bracket_series_matches_high_precision():
     for t in [1e-8, 1e-4, 0.01, 0.3, 0.4999, 0.5001, 3.0]:
         with mp.workdps(60):
             exact = float(mp.mpf(t) + (mp.mpf(t) ** 2 - 1) * mp.atan(mp.mpf(t)))
-        assert md._f1(np.float64(t)) == pytest.approx(exact, rel=2e-15)
+        assert md_first_bracket(np.float64(t)) == pytest.approx(exact, rel=2e-15)
 
 
 def test_lambda_c_matches_direct_search():
