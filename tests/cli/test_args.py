@@ -149,7 +149,7 @@ def test_negative_quantity_is_a_value_not_an_option(capsys):
 def test_contact_from_args_is_the_library_contact():
     pytest.importorskip("pint")
     from asperity.cli import build_parser
-    from asperity.cli._args import contact_from_args, is_physical
+    from asperity.cli._build import contact_from_args, is_physical
     from asperity.physical import PhysicalContact, Surface
 
     args = build_parser().parse_args(["load", *AU, "--no-adhesion", "--load", "1mN"])

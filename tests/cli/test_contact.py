@@ -276,7 +276,7 @@ def test_a_bad_scan_is_one_line(capsys, tmp_path):
 def test_heights_reach_every_physical_command(command):
     """--heights is in every command with a physical contact (fit's gw model too), and the contact gets it."""
     from asperity.cli import build_parser
-    from asperity.cli._args import contact_from_args
+    from asperity.cli._build import contact_from_args
 
     data = ["data.csv"] if command == "fit" else []
     args = build_parser().parse_args([command, *data, *AU_NEW, "--heights", "weibull:skew=0.5"])

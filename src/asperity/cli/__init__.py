@@ -12,6 +12,7 @@ and exits with status 2.
 One module per command (:data:`COMMANDS`), each with ``NAME``, ``HELP``,
 ``DESCRIPTION`` (and optionally ``EPILOG``), ``add_arguments(parser)`` and ``run(args)``;
 the shared parts are :mod:`~asperity.cli._args` (lists, quantities, argument groups),
+:mod:`~asperity.cli._build` (the model or contact of the parsed options),
 :mod:`~asperity.cli._output` (formats, atomic writing) and :mod:`~asperity.cli._plot`.
 Command modules import NumPy, SciPy and the model inside ``run``, after parsing, so
 ``--help`` and ``--version`` answer without loading them.

@@ -7,7 +7,8 @@ physical contact), asks the library for the curve, and writes it (and ``--plot``
 
 from __future__ import annotations
 
-from ._args import UsageError, contact_from_args, is_physical, model_from_args, parse_list, quantity_list, title
+from ._args import UsageError, parse_list, quantity_list
+from ._build import contact_from_args, is_physical, model_from_args, title
 from ._output import curve_rows, format_physical, format_rows, output_format, write_outputs
 
 __all__ = ["run_curve"]

@@ -50,7 +50,8 @@ def run(args) -> None:
     import warnings
 
     from .._optional import require
-    from ._args import SurfaceNote, material_from_args, quantity_list, read_kwargs_from_args
+    from ._args import quantity_list, read_kwargs_from_args
+    from ._build import SurfaceNote, material_from_args
     from ._output import comment_header, format_json, format_rows, output_format, write_outputs
 
     require("ContactMechanics", purpose="asperity bem", extra="bem")

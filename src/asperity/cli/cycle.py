@@ -11,14 +11,11 @@ from ._args import (
     add_contact_arguments,
     add_model_arguments,
     add_output_arguments,
-    contact_from_args,
-    is_physical,
-    model_from_args,
     parse_list,
     quantity,
     quantity_list,
-    title,
 )
+from ._build import contact_from_args, is_physical, model_from_args, title
 
 NAME = "cycle"
 HELP = "approach-retract cycle: hysteresis, energy dissipated, pull-off on retraction"

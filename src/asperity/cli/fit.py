@@ -11,16 +11,8 @@ from __future__ import annotations
 
 import argparse
 
-from ._args import (
-    BODY_OPTIONS,
-    SURFACE_OPTIONS,
-    UsageError,
-    add_contact_arguments,
-    contact_from_args,
-    material_from_args,
-    output_file,
-    quantity,
-)
+from ._args import BODY_OPTIONS, SURFACE_OPTIONS, UsageError, add_contact_arguments, output_file, quantity
+from ._build import contact_from_args, material_from_args
 
 #: The options that make a rough surface (--R alone is the tip radius of the single-asperity laws).
 SURFACE_ONLY = tuple(name for name in SURFACE_OPTIONS if name != "R")

@@ -4,15 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from ._args import (
-    UsageError,
-    add_contact_arguments,
-    add_model_arguments,
-    add_output_arguments,
-    contact_from_args,
-    is_physical,
-    model_from_args,
-)
+from ._args import UsageError, add_contact_arguments, add_model_arguments, add_output_arguments
+from ._build import contact_from_args, is_physical, model_from_args
 
 NAME = "pulloff"
 HELP = "pull-off force (Table 1)"
