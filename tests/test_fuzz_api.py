@@ -351,9 +351,11 @@ NAN_OK = {"mu", "pressure", "d", "pull_off", "d_m", "area_fraction", "nominal_ar
           # a cycle's pull-off separation where there is none, its friction at zero load where the force
           # keeps its sign; the approach of a periodic boundary-element cell (documented in their records)
           "d_pull_off", "d_pull_off_m", "friction_zero_load", "friction_zero_load_N", "separation", "sep_bem_m",
-          "correlation"}  # a fit's correlation where undetermined (asperity.fit.FitResult)
+          "correlation",  # a fit's correlation where undetermined (asperity.fit.FitResult)
+          "ks"}  # a height family that cannot hold the summits (asperity.heights.fit.FitResult, documented)
 #: ... and infinite: mu, pressure (above), and a cycle's spring stiffness (inf: displacement control).
-INF_OK = {"mu", "pressure", "stiffness", "stiffness_N_m"}
+#: md_branch_end's t below lambda_c; log-likelihood and AIC of a height family that cannot hold the summits.
+INF_OK = {"mu", "pressure", "stiffness", "stiffness_N_m", "t", "log_likelihood", "aic"}
 
 
 # -- bad values -------------------------------------------------------------------------------------

@@ -372,6 +372,20 @@ def _reject_non_real(value, name: str) -> None:
         raise ValueError(f"{name} must be a real number or an array of real numbers, got {what}")
 
 
+def check_mean_pressure(P, E_star: float, A0: float, p_range: tuple[float, float]) -> None:
+    """Refuse loads ``P`` (N) whose mean pressure over ``E_star`` (Pa) on the area ``A0`` (m^2) lies
+    outside ``p_range``; the ValueError names P and E_star and gives the loads allowed."""
+    lo, hi = p_range
+    P = np.asarray(P, dtype=float)
+    with np.errstate(all="ignore"):
+        p_bar = P / E_star / A0
+    bad = ~((p_bar >= lo) & (p_bar <= hi))
+    if bad.any():
+        raise ValueError(f"P/(E_star A0) (mean pressure over the contact modulus) must lie in [{lo:g}, {hi:g}]: "
+                         f"for E_star = {E_star:.6g} Pa on this map (A0 = {A0:.6g} m^2) the loads P must lie in "
+                         f"[{lo * E_star * A0:.6g}, {hi * E_star * A0:.6g}] N, got P = {float(P[bad][0]):.6g} N")
+
+
 def check_overflow(result, name: str, limit, value):
     """``result`` unchanged if every element is finite; else a ValueError for the input that overflowed.
 

@@ -18,7 +18,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_nonnegative, check_overflow, check_positive, check_radius
+from ._validation import (
+    as_float_array,
+    check_finite_result,
+    check_nonnegative,
+    check_overflow,
+    check_positive,
+    check_radius,
+)
 
 __all__ = ["dmt_load", "dmt_penetration", "DMT_PULL_OFF", "dmt_solve_load", "dmt_solve", "dmt_contact_radius",
            "dmt_normal_force", "dmt_pull_off_force"]
@@ -232,10 +239,13 @@ def dmt_contact_radius(P, *, R, w, E_star):
     R = check_positive(R, "R")
     w = check_nonnegative(w, "w")
     K = (4.0 / 3.0) * check_positive(E_star, "E_star")
-    Q = 2.0 * np.pi * w * R
+    with np.errstate(all="ignore"):
+        Q = 2.0 * np.pi * w * R
     if np.any(P < -Q * (1.0 + 1e-15)):
         raise ValueError(f"P (load) must be >= -2 pi w R (the DMT pull-off load), got min {P.min():g} N")
-    return np.cbrt(R / K * np.maximum(P + Q, 0.0))
+    with np.errstate(all="ignore"):
+        a = np.cbrt(R / K * np.maximum(P + Q, 0.0))
+    return check_finite_result(a, "the DMT contact radius", P=P, R=R, w=w, E_star=E_star)
 
 
 def dmt_normal_force(delta, *, R, w, E_star):
@@ -281,7 +291,9 @@ def dmt_normal_force(delta, *, R, w, E_star):
     K = (4.0 / 3.0) * check_positive(E_star, "E_star")
     if np.any(delta < 0):
         raise ValueError("delta (penetration) must be >= 0: DMT has no contact at negative penetration")
-    return K * np.sqrt(R) * delta**1.5 - 2.0 * np.pi * w * R
+    with np.errstate(all="ignore"):
+        F = K * np.sqrt(R) * delta**1.5 - 2.0 * np.pi * w * R
+    return check_finite_result(F, "the DMT force", delta=delta, R=R, w=w, E_star=E_star)
 
 
 def dmt_pull_off_force(*, R, w):

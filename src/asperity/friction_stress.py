@@ -87,8 +87,8 @@ def hk_slope_intercept(tau_f1=TAU_F1, tau_f2=TAU_F2, a1=A1, a2=A2):
     Adams et al., Eq (3).
     """
     tau_f1, tau_f2, a1, a2 = _check_hk(tau_f1, tau_f2, a1, a2)
-    span = np.log10(a2 / a1)
-    slope = -np.log10(tau_f1 / tau_f2) / span
+    span = np.log10(a2) - np.log10(a1)
+    slope = -(np.log10(tau_f1) - np.log10(tau_f2)) / span  # logs first: the ratio may overflow
     intercept = (np.log10(tau_f1) * np.log10(a2) - np.log10(tau_f2) * np.log10(a1)) / span
     return float(slope), float(intercept)
 

@@ -24,6 +24,7 @@ import numpy as np
 from ._validation import (
     as_float_array,
     check_broadcast,
+    check_finite_result,
     check_overflow,
     check_poisson,
     check_positive,
@@ -296,4 +297,6 @@ def hertz_normal_force(delta, *, R, E_star):
     K = (4.0 / 3.0) * check_positive(E_star, "E_star")
     if np.any(delta < 0):
         raise ValueError("delta (penetration) must be >= 0 without adhesion (Hertz)")
-    return K * np.sqrt(R) * delta**1.5
+    with np.errstate(all="ignore"):
+        F = K * np.sqrt(R) * delta**1.5
+    return check_finite_result(F, "the Hertz force", delta=delta, R=R, E_star=E_star)

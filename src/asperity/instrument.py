@@ -47,7 +47,7 @@ from ._validation import as_float_array, scalar
 from .cycle_search import bracketed_roots
 from .quadrature import gauss_legendre
 
-__all__ = ["Jump", "check_stiffness", "base_displacement", "spring_path", "jump_energy"]
+__all__ = ["Jump", "STIFFNESS_MIN", "check_stiffness", "base_displacement", "spring_path", "jump_energy"]
 
 
 @dataclass(frozen=True)
@@ -82,15 +82,20 @@ class Jump:
                 "P_from": self.P_from, "P_to": self.P_to, "energy": self.energy}
 
 
+#: Softest spring handled, :math:`\bar k = k\sigma/(NGb^2)`: a softer one moves its base more than
+#: 1e100 sigma per unit load, and the base positions overflow double precision.
+STIFFNESS_MIN = 1e-100
+
+
 def check_stiffness(stiffness) -> float:
-    """``stiffness`` as a float in (0, inf]; ValueError naming it otherwise."""
+    """``stiffness`` as a float in [:data:`STIFFNESS_MIN`, inf]; ValueError naming it otherwise."""
     if isinstance(stiffness, float | int | np.floating | np.integer) and not isinstance(stiffness, bool | np.bool_) \
             and math.isinf(stiffness) and stiffness > 0:
         return math.inf
     k = float(scalar(as_float_array(stiffness, "stiffness"), "stiffness"))
-    if not k > 0:
-        raise ValueError(f"stiffness (instrument spring, k sigma/(N G b^2)) must be > 0 (inf: displacement "
-                         f"control; valid range 0 < stiffness <= inf), got {stiffness!r}")
+    if not k >= STIFFNESS_MIN:
+        raise ValueError(f"stiffness (instrument spring, k sigma/(N G b^2)) must be >= {STIFFNESS_MIN:g} (inf: "
+                         f"displacement control; valid range {STIFFNESS_MIN:g} <= stiffness <= inf), got {stiffness!r}")
     return k
 
 

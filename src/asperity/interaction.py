@@ -63,7 +63,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validation import as_float_array, check_poisson, check_scalar_positive
+from ._validation import as_float_array, check_finite_result, check_poisson, check_scalar_positive, scalar
 
 __all__ = [
     "CGP_MEAN_COMPLIANCE",
@@ -117,7 +117,9 @@ def cgp_shift(p, area, E_star):
     p = as_float_array(p, "p")
     area = check_scalar_positive(area, "area", "m^2")
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
-    out = CGP_MEAN_COMPLIANCE * p * math.sqrt(area) / E_star
+    with np.errstate(all="ignore"):
+        out = CGP_MEAN_COMPLIANCE * p * math.sqrt(area) / E_star
+    out = check_finite_result(out, "the shift Delta", p=p, area=area, E_star=E_star)
     return float(out) if out.ndim == 0 else out
 
 
@@ -157,8 +159,10 @@ def cgp_compliance(eta, area, b, sigma_s, nu=0.3) -> float:
     area = check_scalar_positive(area, "area", "m^2")
     b = check_scalar_positive(b, "b", "m")
     sigma_s = check_scalar_positive(sigma_s, "sigma_s", "m")
-    nu = float(check_poisson(nu))
-    return CGP_MEAN_COMPLIANCE * (1.0 - nu) / 2.0 * eta * b * b * math.sqrt(area) / sigma_s
+    nu = scalar(check_poisson(nu), "nu")
+    with np.errstate(all="ignore"):
+        k = np.float64(CGP_MEAN_COMPLIANCE * (1.0 - nu) / 2.0 * eta) * b * b * math.sqrt(area) / sigma_s
+    return float(check_finite_result(k, "the compliance k", eta=eta, area=area, b=b, sigma_s=sigma_s))
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_nonnegative, check_overflow, check_positive, check_radius, scalar
+from ._validation import (
+    as_float_array,
+    check_finite_result,
+    check_nonnegative,
+    check_overflow,
+    check_positive,
+    check_radius,
+    scalar,
+)
 
 __all__ = ["jkr_load", "jkr_penetration", "jkr_pull_off", "jkr_solve_load", "jkr_solve", "jkr_contact_radius",
            "jkr_normal_force", "jkr_pull_off_force"]
@@ -307,12 +315,15 @@ def jkr_contact_radius(P, *, R, w, E_star):
     """
     P = as_float_array(P, "P", allow_empty=True)
     R, w, K = _physical(R, w, E_star)
-    Q = 3.0 * np.pi * w * R
+    with np.errstate(all="ignore"):
+        Q = 3.0 * np.pi * w * R
     if np.any(P < -0.5 * Q * (1.0 + 1e-15)):
         raise ValueError("P (load) must be >= -3/2 pi w R (the JKR pull-off load), got min "
                          f"{P.min():g} N")
-    root = np.sqrt(np.maximum(2.0 * Q * P + Q * Q, 0.0))
-    return np.cbrt(R / K * (P + Q + root))
+    with np.errstate(all="ignore"):
+        root = np.sqrt(np.maximum(2.0 * Q * P + Q * Q, 0.0))
+        a = np.cbrt(R / K * (P + Q + root))
+    return check_finite_result(a, "the JKR contact radius", P=P, R=R, w=w, E_star=E_star)
 
 
 def jkr_normal_force(delta, *, R, w, E_star):
@@ -362,12 +373,22 @@ def jkr_normal_force(delta, *, R, w, E_star):
     """
     delta = as_float_array(delta, "delta", allow_empty=True)
     R, w, K = (float(scalar(x, n)) for x, n in zip(_physical(R, w, E_star), ("R", "w", "E_star"), strict=True))
+    R, w, K = np.float64(R), np.float64(w), np.float64(K)  # extreme values: inf or 0, refused below
     if w == 0.0:
         if np.any(delta < 0):
             raise ValueError("delta (penetration) must be >= 0 without adhesion (w = 0, Hertz)")
-        return K * np.sqrt(R) * delta**1.5
-    scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
-    return jkr_solve(delta / scale)[1] * np.pi * w * R
+        with np.errstate(all="ignore"):
+            F = K * np.sqrt(R) * delta**1.5
+        return check_finite_result(F, "the Hertz force", delta=delta, R=R, E_star=E_star)
+    with np.errstate(all="ignore"):
+        scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
+        check_finite_result([scale, 1.0 / scale, np.pi * w * R], "the JKR units of length and force", R=R, w=w,
+                            E_star=E_star)
+        delta_hat = check_finite_result(delta / scale, "the penetration in JKR units", delta=delta, R=R, w=w,
+                                        E_star=E_star)
+    with np.errstate(all="ignore"):
+        F = jkr_solve(delta_hat)[1] * np.pi * w * R
+    return check_finite_result(F, "the JKR force", delta=delta, R=R, w=w, E_star=E_star)
 
 
 def jkr_pull_off_force(*, R, w):

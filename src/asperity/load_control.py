@@ -108,14 +108,14 @@ def start_separation(params: ModelParameters, P_max, d_hi) -> float:
         raise ValueError(f"d_hi (separation d/sigma) must lie in [{D_MIN:g}, {D_MAX + U_END_LIMIT:g}], got {d_hi!r}")
     c = (8.0 / 3.0) / (1.0 - p.nu) * p.alpha * p.beta**2
     d_lo = min(-3.0, d_hi - 1.0, -((max(P_max, 0.0) / c) ** (2.0 / 3.0)) - 2.0)
-    _check_floor(d_lo, P_max)
+    _check_floor(d_lo, P_max, p)
     return d_lo
 
 
-def _check_floor(d_lo, P_max):
+def _check_floor(d_lo, P_max, p):
     if d_lo < D_MIN:
-        raise ValueError(f"P_max (the largest load P) = {P_max:g} is too large: it needs a separation below "
-                         f"d/sigma = {D_MIN:g}")
+        raise ValueError(f"P_max (the largest load P) = {P_max:g} is too large for alpha = {p.alpha:g}, "
+                         f"beta = {p.beta:g}, gamma = {p.gamma:g}: it needs a separation below d/sigma = {D_MIN:g}")
 
 
 def bracket_low(tab: Tabulation, P_max, d_lo, d_hi) -> tuple[float, Tabulation]:
@@ -163,7 +163,7 @@ def bracket_low(tab: Tabulation, P_max, d_lo, d_hi) -> tuple[float, Tabulation]:
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi, covered=False)
     P_max = check_scalar_real(P_max, "P_max")
     while True:
-        _check_floor(d_lo, P_max)
+        _check_floor(d_lo, P_max, tab.params)
         tab = tab.extended(d_lo, d_hi)
         if tab.sums(np.array([d_lo]))[0][0, 1] > P_max:
             return d_lo, tab

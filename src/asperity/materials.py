@@ -163,6 +163,9 @@ class Material:
             raise ValueError(f"sigma0 (Dugdale stress) needs a positive work of adhesion w; "
                              f"{self.name!r} has w = {self.w!r}")
         h = self.w / self.sigma0
+        if not 0.0 < h < math.inf:
+            raise ValueError(f"sigma0 (Dugdale stress) = {self.sigma0:g} Pa with w = {self.w:g} J/m^2 gives a Dugdale "
+                             f"range h = w/sigma0 = {h:g} m, not a positive finite double: give physical values")
         if self.h is None:
             object.__setattr__(self, "h", h)
         elif not math.isclose(self.h, h, rel_tol=1e-9):

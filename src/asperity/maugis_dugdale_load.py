@@ -227,11 +227,13 @@ def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     """
     R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
     P = as_float_array(P, "P", allow_empty=True)
-    with np.errstate(over="ignore"):
+    with np.errstate(all="ignore"):
         P_hat = P / (np.pi * w * R)
     check_finite_result(P_hat, "the load P/(pi w R)", P=P, R=R, w=w)
     A = md_solve_load(P_hat, lam)[0]
-    return A * np.cbrt(np.pi * w * R * R / K)
+    with np.errstate(all="ignore"):
+        a = A * np.cbrt(np.pi * w * R * R / K)
+    return check_finite_result(a, "the Maugis-Dugdale contact radius", P=P, R=R, w=w, E_star=E_star)
 
 
 def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
@@ -285,8 +287,16 @@ def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
     """
     R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
     delta = as_float_array(delta, "delta", allow_empty=True)
-    scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
-    return md_solve(delta / scale, lam)[1] * np.pi * w * R
+    R, w, K = np.float64(R), np.float64(w), np.float64(K)  # extreme values: inf or 0, refused below
+    with np.errstate(all="ignore"):
+        scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
+        check_finite_result([scale, 1.0 / scale, np.pi * w * R], "the Maugis units of length and force", R=R, w=w,
+                            E_star=E_star)
+        delta_hat = check_finite_result(delta / scale, "the penetration in Maugis units", delta=delta, R=R, w=w,
+                                        E_star=E_star)
+    with np.errstate(all="ignore"):
+        F = md_solve(delta_hat, lam)[1] * np.pi * w * R
+    return check_finite_result(F, "the Maugis-Dugdale force", delta=delta, R=R, w=w, E_star=E_star)
 
 
 def md_pull_off_force(*, R, w, E_star, sigma0=None, lam=None, control: str = "load"):

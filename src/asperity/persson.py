@@ -44,7 +44,7 @@ import math
 import numpy as np
 from scipy import special
 
-from ._validation import as_float_array, check_scalar_positive
+from ._validation import as_float_array, check_finite_result, check_scalar_positive
 
 __all__ = ["KAPPA_PERSSON", "KAPPA_BGT", "persson_area_fraction", "bgt_area_fraction", "rms_slope"]
 
@@ -100,7 +100,10 @@ def persson_area_fraction(p, E_star, rms_slope):
     p = _pressure(p)
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
     slope = check_scalar_positive(rms_slope, "rms_slope", "")
-    return special.erf(math.sqrt(2.0) * p / (E_star * slope))
+    with np.errstate(all="ignore"):
+        x = check_finite_result(math.sqrt(2.0) * p / (E_star * slope), "p/(E_star rms_slope)", p=p, E_star=E_star,
+                                rms_slope=slope)
+    return special.erf(x)
 
 
 def bgt_area_fraction(p, E_star, rms_slope):
@@ -144,7 +147,9 @@ def bgt_area_fraction(p, E_star, rms_slope):
     p = _pressure(p)
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
     slope = check_scalar_positive(rms_slope, "rms_slope", "")
-    return KAPPA_BGT * p / (E_star * slope)
+    with np.errstate(all="ignore"):
+        out = KAPPA_BGT * p / (E_star * slope)
+    return check_finite_result(out, "the BGT area fraction", p=p, E_star=E_star, rms_slope=slope)
 
 
 def rms_slope(topography):

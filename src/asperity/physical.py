@@ -218,7 +218,11 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
         if friction is None or isinstance(friction, FrictionLaw):
             return friction
         tau = check_scalar_positive(friction, "friction (shear strength tau)", "Pa")
-        return ConstantShear(tau / self.G_star)
+        ratio = tau / self.G_star
+        if not 0.0 < ratio < math.inf:
+            raise ValueError(f"friction (shear strength tau) = {tau:g} Pa is out of range for G* = {self.G_star:g} Pa: "
+                             "tau/G* must be a positive, finite double")
+        return ConstantShear(ratio)
 
     # -- material and surface -----------------------------------------------------------
     @property

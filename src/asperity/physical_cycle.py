@@ -31,9 +31,10 @@ import numpy as np
 
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._json import json_safe
-from ._validation import as_float_array, check_scalar_positive, scalar
+from ._validation import as_float_array, check_finite_result, check_scalar_positive, scalar
 from .cycle import CycleResult, PreloadCurve, compute_cycle, compute_preload_curve
 from .cycle_integrals import CycleIntegrals
+from .instrument import STIFFNESS_MIN
 from .physical import PhysicalContact, PhysicalCurve, PhysicalPullOff, warn_area_fraction
 from .quantities import CYCLE_QUANTITIES
 from .units import to_si
@@ -176,7 +177,13 @@ def _stiffness(contact: PhysicalContact, stiffness) -> float:
                              and math.isinf(stiffness) and stiffness > 0):
         return math.inf
     k = check_scalar_positive(stiffness, "stiffness", "N/m")
-    return k * contact.surface.sigma_s / contact.force_scale
+    with np.errstate(all="ignore"):
+        k_bar = float(np.float64(k) * contact.surface.sigma_s / contact.force_scale)
+    if not STIFFNESS_MIN <= k_bar < math.inf:
+        raise ValueError(f"stiffness = {k:g} N/m is out of range for this contact: k sigma_s/(N G b^2) = {k_bar:g} "
+                         f"must lie in [{STIFFNESS_MIN:g}, inf) (N G b^2 = {contact.force_scale:.6g} N, sigma_s = "
+                         f"{contact.surface.sigma_s:.6g} m)")
+    return k_bar
 
 
 def _scaled(contact: PhysicalContact, err: ValueError) -> ValueError:
@@ -263,7 +270,9 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
         preload = check_scalar_positive(preload, "preload", "N") / fs
     k = _stiffness(contact, stiffness)
     if d is not None:
-        d = as_float_array(to_si(d, "m", "d"), "d").ravel() / sigma
+        d = as_float_array(to_si(d, "m", "d"), "d").ravel()
+        with np.errstate(all="ignore"):
+            d = check_finite_result(d / sigma, "d/sigma_s", d=d, sigma_s=sigma)
     try:
         ci = CycleIntegrals(contact.model, u_in_m / sigma)
         res = compute_cycle(ci, d_min=None if d_min is None else d_min / sigma, preload=preload,

@@ -40,7 +40,13 @@ import warnings
 
 import numpy as np
 
-from ._validation import check_nonnegative, check_positive, check_scalar_positive
+from ._validation import (
+    check_broadcast,
+    check_finite_result,
+    check_nonnegative,
+    check_positive,
+    check_scalar_positive,
+)
 from ._warnings import AsperityWarning
 from .elastic_plastic import LAWS, critical_penetration
 from .materials import Material
@@ -93,8 +99,12 @@ def plasticity_index(E_star, H, sigma_s, R):
     ----------
     Greenwood & Williamson (1966), the plasticity index.
     """
-    out = (check_positive(E_star, "E_star") / check_positive(H, "H")
-           * np.sqrt(check_positive(sigma_s, "sigma_s") / check_positive(R, "R")))
+    E_star, H = check_positive(E_star, "E_star"), check_positive(H, "H")
+    sigma_s, R = check_positive(sigma_s, "sigma_s"), check_positive(R, "R")
+    check_broadcast(E_star=E_star, H=H, sigma_s=sigma_s, R=R)
+    with np.errstate(all="ignore"):
+        out = E_star / H * np.sqrt(sigma_s / R)
+    out = check_finite_result(out, "the plasticity index psi", E_star=E_star, H=H, sigma_s=sigma_s, R=R)
     return float(out) if out.ndim == 0 else out
 
 

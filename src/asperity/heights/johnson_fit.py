@@ -147,12 +147,15 @@ def _solve_su(skew: float, kurt: float) -> tuple[float, float]:
     """(delta, Omega) of S_U with the given skewness (>= 0 handled by symmetry) and kurtosis."""
     s = abs(skew)
     w_line, _ = lognormal_line(s)
-    delta_line = 1.0 / math.sqrt(math.log(w_line)) if s > 0 else math.inf
+    near = w_line == 1.0  # skewness so small (or 0) that the lognormal line's omega rounds to 1
+    delta_line = math.inf if near else 1.0 / math.sqrt(math.log(w_line))
 
     def omega_for(delta):  # |skew| increases with Omega along a curve of constant delta
         if s == 0.0:
             return 0.0
         f = lambda om: su_moments(delta, -om)[0] - s  # noqa: E731 - Omega < 0 gives positive skewness
+        if f(0.0) >= 0.0:  # s below the rounding of the symmetric curve's skewness
+            return 0.0
         if f(_OMEGA_MAX) < 0:
             return _OMEGA_MAX
         return optimize.brentq(f, 0.0, _OMEGA_MAX, xtol=1e-15, rtol=1e-15)
@@ -161,7 +164,7 @@ def _solve_su(skew: float, kurt: float) -> tuple[float, float]:
         delta = math.exp(log_delta)
         return su_moments(delta, -omega_for(delta))[1] - kurt
 
-    hi = math.log(delta_line) - 1e-12 if s > 0 else math.log(1e4)
+    hi = math.log(1e4) if near else math.log(delta_line) - 1e-12
     lo = math.log(0.3)
     if excess(lo) < 0:
         raise ValueError(f"kurt = {kurt:g} is too large for skew = {skew:g}: the Johnson S_U fit needs "
@@ -178,13 +181,15 @@ def _solve_sb(skew: float, kurt: float) -> tuple[float, float]:
     """(delta, gamma) of S_B with the given skewness and kurtosis (gamma > 0: positive skewness)."""
     s = abs(skew)
     w_line, _ = lognormal_line(s)
-    delta_line = 1.0 / math.sqrt(math.log(w_line)) if s > 0 else 60.0
+    delta_line = 60.0 if w_line == 1.0 else 1.0 / math.sqrt(math.log(w_line))
     far = ValueError(f"skew = {skew:g}, kurt = {kurt:g}: too close to the lognormal line for an S_B fit")
 
     def gamma_for(delta):
         if s == 0.0:
             return 0.0
         f = lambda g: sb_moments(delta, g)[2] - s  # noqa: E731
+        if f(0.0) >= 0.0:  # s below the rounding of the symmetric curve's skewness (~1e-16)
+            return 0.0
         hi = delta
         while f(hi) < 0:
             hi *= 2.0

@@ -40,7 +40,7 @@ References
 .. [3] K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), §3.4, §4.2.
 """
 
-from .contact import MAX_LOADS, MAX_SUMMITS, IchaCurve, icha_contact, icha_curve
+from .contact import MAX_LOADS, MAX_SUMMITS, P_BAR_RANGE, IchaCurve, icha_contact, icha_curve
 from .field import FreeKernel, PeriodicKernel, boussinesq_rectangle_mean, hertz_displacement, hertz_excess
 from .solver import IchaState, merge_spots
 from .summits import RADII, MapSummits, map_summits
@@ -61,4 +61,5 @@ __all__ = [
     "PeriodicKernel",
     "MAX_SUMMITS",
     "MAX_LOADS",
+    "P_BAR_RANGE",
 ]

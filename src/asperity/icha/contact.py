@@ -16,18 +16,22 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
-from .._validation import as_float_array, check_scalar_positive
+from .._validation import as_float_array, check_mean_pressure, check_scalar_positive
 from .field import FreeKernel, PeriodicKernel, boussinesq_rectangle_mean
 from .solver import IchaState
 from .summits import MapSummits, map_summits
 
-__all__ = ["IchaCurve", "icha_contact", "icha_curve", "MAX_SUMMITS", "MAX_LOADS"]
+__all__ = ["IchaCurve", "icha_contact", "icha_curve", "MAX_SUMMITS", "MAX_LOADS", "P_BAR_RANGE"]
 
 #: Most summits on one map: the model keeps two summits x summits matrices (distances and
 #: point-force fields, 8 N^2 bytes each: 256 MB at the limit).
 MAX_SUMMITS = 4000
 #: Most loads in one run.
 MAX_LOADS = 1000
+#: Range of the mean pressure over the contact modulus, :math:`P/(E^*A_0)`: above 1 the strains are
+#: of order one (linear elasticity has long failed); below 1e-20 the first contact's penetration
+#: is lost in the rounding of the summit heights and the solver no longer converges.
+P_BAR_RANGE = (1e-20, 1.0)
 
 
 @dataclass(frozen=True)
@@ -136,8 +140,9 @@ def icha_curve(summits, P, *, E_star, interaction=True, coalescence=True) -> Ich
     summits : MapSummits
         The asperities (:func:`~asperity.icha.summits.map_summits`), at most :data:`MAX_SUMMITS`.
     P : array_like
-        Total normal forces [N] on the map, > 0, 1 to :data:`MAX_LOADS` values; reported in
-        the order given.
+        Total normal forces [N] on the map, > 0, 1 to :data:`MAX_LOADS` values, with mean
+        pressures :math:`P/A_0` between 1e-20 and 1 times :math:`E^*` (:data:`P_BAR_RANGE`);
+        reported in the order given.
     E_star : float
         Contact modulus :math:`E^*` [Pa], > 0.
     interaction : bool
@@ -180,6 +185,7 @@ def icha_curve(summits, P, *, E_star, interaction=True, coalescence=True) -> Ich
                          "(grid=..., --grid on the command line) first")
     P = _check_loads(P)
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
+    check_mean_pressure(P, E_star, summits.nominal_area, P_BAR_RANGE)
     start = time.perf_counter()
     kernel = PeriodicKernel(*summits.size) if summits.periodic else FreeKernel()
     state = IchaState.start(summits, E_star, kernel, interaction=bool(interaction), coalescence=bool(coalescence))
@@ -231,7 +237,8 @@ def icha_contact(topography, P, *, E_star, periodic=None, radius="geometric", in
         A 2-d map (``unit`` 'm', another length unit, or None for metres) without
         undefined data; its mean plane is removed (only its mean, if periodic).
     P : array_like
-        Total normal forces [N] on the map, > 0.
+        Total normal forces [N] on the map, > 0, with mean pressures :math:`P/A_0` between
+        1e-20 and 1 times :math:`E^*` (:data:`P_BAR_RANGE`).
     E_star : float
         Contact modulus :math:`E^*` [Pa], > 0.
     periodic : bool, optional

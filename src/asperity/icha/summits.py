@@ -136,12 +136,13 @@ def map_summits(heights, pixel_size, *, periodic: bool, radius: str = "geometric
         raise ValueError(f"heights must be a 2-d map with at least 3 points along each axis, got shape {h.shape}")
     if not isinstance(periodic, bool | np.bool_):
         raise TypeError(f"periodic must be True or False, got {periodic!r}")
+    if not isinstance(radius, str):
+        raise TypeError(f"radius must be one of {RADII} (a string), got {type(radius).__name__}")
     if radius not in RADII:
         raise ValueError(f"radius must be one of {RADII}, got {radius!r}")
-    try:
-        dx, dy = (check_scalar_positive(p, "pixel_size", "m") for p in pixel_size)
-    except TypeError:
-        raise ValueError(f"pixel_size must be a pair of spacings (dx, dy) in m, got {pixel_size!r}") from None
+    if isinstance(pixel_size, str | bytes) or not hasattr(pixel_size, "__len__") or len(pixel_size) != 2:
+        raise TypeError(f"pixel_size must be a pair of spacings (dx, dy) in m, got {pixel_size!r}")
+    dx, dy = (check_scalar_positive(p, "pixel_size", "m") for p in pixel_size)
     h = h - h.mean()
     nx, ny = h.shape
     padded = np.pad(h, 1, mode="wrap")   # on a free map the border rows never hold a summit

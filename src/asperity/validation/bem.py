@@ -45,11 +45,11 @@ import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._optional import require
-from .._validation import as_float_array, check_scalar_positive
+from .._validation import as_float_array, check_mean_pressure, check_scalar_positive
 from .progress import progress_bar
 from .spots import count_spots
 
-__all__ = ["BemCurve", "bem_contact", "subsample", "MIN_GRID", "MAX_LOADS", "DEFAULT_TOLERANCE"]
+__all__ = ["BemCurve", "bem_contact", "subsample", "MIN_GRID", "MAX_LOADS", "DEFAULT_TOLERANCE", "P_BAR_RANGE"]
 
 #: Fewest grid points along each axis for a boundary-element solve (after ``grid``).
 MIN_GRID = 16
@@ -173,6 +173,12 @@ def subsample(topography, grid):
     return st.Topography(blocks, (sx * mx * f / nx, sy * my * f / ny), periodic=periodic, unit="m")
 
 
+#: Range of the mean pressure over the contact modulus, :math:`P/(E^*A_0)`, solved: above 1 the
+#: strains are of order one (linear elasticity has long failed, and the map is in full contact);
+#: below 1e-15 the solver's tolerances, relative to the load, reach the rounding of the heights.
+P_BAR_RANGE = (1e-15, 1.0)
+
+
 def _check_loads(P) -> np.ndarray:
     P = as_float_array(P, "P (load)").ravel()
     if P.size == 0 or P.size > MAX_LOADS:
@@ -198,8 +204,9 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
         A 2-d map in metres (``unit`` 'm' or None) without undefined data; its mean plane
         is removed (its mean only, if periodic).
     P : array_like
-        Total normal forces [N] on the scanned area, > 0, 1 to :data:`MAX_LOADS` values;
-        solved in increasing order and reported in the order given.
+        Total normal forces [N] on the scanned area, > 0, 1 to :data:`MAX_LOADS` values, with
+        mean pressures :math:`P/A_0` between 1e-15 and 1 times :math:`E^*`
+        (:data:`P_BAR_RANGE`); solved in increasing order and reported in the order given.
     E_star : float
         Contact modulus :math:`E^*` [Pa], > 0.
     periodic : bool, optional
@@ -248,6 +255,7 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
     systems = require("ContactMechanics.Systems", purpose="boundary-element contact", extra="bem")
     nb = tuple(int(n) for n in topo.nb_grid_pts)
     sizes = tuple(float(s) for s in topo.physical_sizes)
+    check_mean_pressure(P, E_star, sizes[0] * sizes[1], P_BAR_RANGE)
     half_space = (cm.PeriodicFFTElasticHalfSpace if periodic else cm.FreeFFTElasticHalfSpace)(nb, E_star, sizes)
     system = systems.NonSmoothContactSystem(half_space, topo)
     h = np.asarray(topo.heights(), dtype=float)
