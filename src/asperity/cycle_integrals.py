@@ -161,7 +161,7 @@ class LoopBand:
         self.u_end = float(law.u_end)
         self.u_in = check_u_in(u_in, self.u_end)
         self.width = self.u_in - self.u_end
-        if self.width <= 0.0:
+        if self.width <= 1e-12:  # no tensile range, or one narrower than the edges' own tolerance below
             self.edges = np.array([self.u_in])
             self.u = np.zeros(0)
             self.weights = np.zeros((0, 4))

@@ -64,18 +64,20 @@ def closest_approach(ci: CycleIntegrals, preload, d_max: float):
         is reached only beyond ``d_max``.
     """
     P_max = float(preload.max())
+    p = ci.params
+    model = f"alpha = {p.alpha:g}, beta = {p.beta:g}, gamma = {p.gamma:g}"
     try:
         d_lo = start_separation(ci.params, P_max, d_max)
         d_lo, tab = bracket_low(ci.approach_tab(d_lo, d_max), P_max, d_lo, d_max)
     except ValueError:
-        raise ValueError(f"preload = {P_max:g} (in N G b^2) is beyond the model's domain: it needs a separation "
-                         f"below d/sigma = {D_MIN:g}") from None
+        raise ValueError(f"preload = {P_max:g} (in N G b^2) is beyond the domain of the model with {model}: it "
+                         f"needs a separation below d/sigma = {D_MIN:g}") from None
     ci.set_approach_tab(tab)
     branch = stable_branch(tab, d_lo, d_max)
     floor = branch.P[-1]
     if preload.min() < floor:
-        raise ValueError(f"preload must be >= {floor:.6g} here: a smaller one is reached only beyond d_max = "
-                         f"{d_max:.6g} (the start of the approach); got {preload.min():g}")
+        raise ValueError(f"preload must be >= {floor:.6g} for the model with {model}: a smaller one is reached "
+                         f"only beyond d_max = {d_max:.6g} (the start of the approach); got {preload.min():g}")
     d, _ = invert_branch(branch.tab, preload, branch.grid, branch.P, branch.dP)
     return d
 

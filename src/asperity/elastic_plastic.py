@@ -65,8 +65,9 @@ from ._validation import as_float_array, check_finite_result, check_nonnegative,
 from .asperity_law import AsperityLaw, ModelParameters
 from .heights import GAUSSIAN, HeightDistribution
 from .jackson_green import E_Y_MAX, OMEGA_T, jg_yield_coefficient, jg_yield_from_hardness
-from .jackson_green_fits import jg_area_fit, jg_load_fit, jg_load_transition
+from .jackson_green_fits import OMEGA_STAR_MAX, jg_area_fit, jg_load_fit, jg_load_transition
 from .nix_gao import ng_interference, ng_scaled_interference
+from .tabulation import D_MAX, D_MIN
 
 __all__ = [
     "Elastic",
@@ -341,7 +342,14 @@ class JacksonGreenLaw:
         self.u_end, self.scale = 0.0, 1.0
         self.C = float(jg_yield_coefficient(params.nu))
         self.e_y0 = float(jg_yield_from_hardness(self.H_over_E))
-        self.u_c0 = (0.5 * np.pi * self.C * self.e_y0) ** 2 / params.alpha**2
+        with np.errstate(all="ignore"):
+            self.u_c0 = float((0.5 * np.pi * self.C * np.float64(self.e_y0)) ** 2 / np.float64(params.alpha) ** 2)
+        # the separations reach D_MIN (1e4 sigma) and the fits hold to omega* = OMEGA_STAR_MAX: u_c >= 1e-8 sigma
+        u_c_min = (D_MAX - D_MIN) / OMEGA_STAR_MAX
+        if not u_c_min <= self.u_c0 < math.inf:
+            raise ValueError(f"H_over_E = {self.H_over_E:g} with alpha = {params.alpha:g} gives a critical "
+                             f"interference omega_c/sigma_s = {self.u_c0:.3g}, outside [{u_c_min:g}, inf) where the "
+                             f"Jackson-Green fits cover the model's separations (omega/omega_c <= {OMEGA_STAR_MAX:g})")
         self.u_c = float(ng_interference(1.0, self.u_c0, self.h_star))
         e_y_max = float(self._e_y(np.array([self.u_c]))[0])
         if e_y_max > E_Y_MAX:

@@ -168,7 +168,9 @@ class PhysicalPreloadCurve:
         return columns_to_csv(self.columns(), path_or_buffer)
 
 
-def _length(value, name):
+def _length(value, name, required=False):
+    if value is None and required:
+        raise TypeError(f"{name} must be a length (m, or a pint length), got None")
     return None if value is None else float(scalar(as_float_array(to_si(value, "m", name), name), name))
 
 
@@ -265,7 +267,7 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     sigma, fs = contact.surface.sigma_s, contact.force_scale
     d_min = _length(d_min, "d_min")
     d_max = _length(d_max, "d_max")
-    u_in_m = _length(u_in, "u_in")
+    u_in_m = _length(u_in, "u_in", required=True)
     if preload is not None:
         preload = check_scalar_positive(preload, "preload", "N") / fs
     k = _stiffness(contact, stiffness)
@@ -341,7 +343,7 @@ def physical_preload_curve(contact: PhysicalContact, preload, *, d_max=None, u_i
     sigma, fs = contact.surface.sigma_s, contact.force_scale
     P = as_float_array(to_si(preload, "N", "preload"), "preload").ravel()
     d_max = _length(d_max, "d_max")
-    u_in_m = _length(u_in, "u_in")
+    u_in_m = _length(u_in, "u_in", required=True)
     try:
         ci = CycleIntegrals(contact.model, u_in_m / sigma)
         res = compute_preload_curve(ci, P / fs, d_max=None if d_max is None else d_max / sigma)

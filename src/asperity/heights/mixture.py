@@ -196,7 +196,9 @@ class Mixture(GaussianSum):
             m1, m2, s1, s2 = (m1 - mean) / sd, (m2 - mean) / sd, s1 / sd, s2 / sd
         if min(s1, s2) < 0.02:
             raise ValueError(f"a component is narrower than 0.02 of the mixture's deviation (s1 = {s1:.3g}, "
-                             f"s2 = {s2:.3g} after standardising): use a single Gaussian or a wider component")
+                             f"s2 = {s2:.3g} after standardising the mixture w = {self.w!r}, m1 = {self.m1!r}, "
+                             f"s1 = {self.s1!r}, m2 = {self.m2!r}, s2 = {self.s2!r}: the means lie too far apart "
+                             "for the deviations): use a single Gaussian or a wider component")
         setattr_ = object.__setattr__
         for key, value in (("w", w), ("m1", m1), ("s1", s1), ("m2", m2), ("s2", s2)):
             setattr_(self, key, value)

@@ -45,7 +45,7 @@ import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._optional import require
-from .._validation import as_float_array, check_mean_pressure, check_scalar_positive
+from .._validation import as_float_array, check_bool, check_mean_pressure, check_scalar_positive
 from .progress import progress_bar
 from .spots import count_spots
 
@@ -244,13 +244,14 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
     """
     P = _check_loads(P)
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
+    progress = check_bool(progress, "progress")
     tolerance = check_scalar_positive(tolerance, "tolerance", "")
     if tolerance > 0.1:
         raise ValueError(f"tolerance must lie in (0, 0.1], got {tolerance!r}")
     if isinstance(maxiter, bool) or not isinstance(maxiter, int | np.integer) or maxiter < 1:
         raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
     topo = _prepare(topography, grid)
-    periodic = bool(topo.is_periodic) if periodic is None else bool(periodic)
+    periodic = bool(topo.is_periodic) if periodic is None else check_bool(periodic, "periodic")
     cm = _contact_mechanics()
     systems = require("ContactMechanics.Systems", purpose="boundary-element contact", extra="bem")
     nb = tuple(int(n) for n in topo.nb_grid_pts)

@@ -29,14 +29,16 @@ import math
 import numpy as np
 
 from .._optional import require
-from .._validation import check_scalar_positive
+from .._validation import check_scalar_positive, check_scalar_range
 
-__all__ = ["synthetic_surface", "SURFACE_KINDS", "BASE_PIXELS_PER_WAVELENGTH"]
+__all__ = ["synthetic_surface", "SURFACE_KINDS", "BASE_PIXELS_PER_WAVELENGTH", "MAX_GRID"]
 
 #: Kinds of :func:`synthetic_surface`.
 SURFACE_KINDS = ("self-affine", "gaussian")
 #: Pixels per shortest wavelength on the grid the spectrum is drawn on (>= 2, Nyquist).
 BASE_PIXELS_PER_WAVELENGTH = 4
+#: Most grid points per axis of a synthetic surface (a 4096^2 map holds 134 MB of heights).
+MAX_GRID = 4096
 
 
 def synthetic_surface(kind, size, grid, *, short_cutoff, rms_slope=0.1, hurst=0.8, long_cutoff=None, seed=0):
@@ -49,7 +51,8 @@ def synthetic_surface(kind, size, grid, *, short_cutoff, rms_slope=0.1, hurst=0.
     size : float
         Side of the square scan [m], > 0.
     grid : int
-        Points per side, at least ``BASE_PIXELS_PER_WAVELENGTH * size / short_cutoff``.
+        Points per side, at least ``BASE_PIXELS_PER_WAVELENGTH * size / short_cutoff`` and at
+        most :data:`MAX_GRID`.
     short_cutoff : float
         Shortest wavelength :math:`\\lambda_s` [m], > 0, at most ``size / 4``.
     rms_slope : float
@@ -57,9 +60,10 @@ def synthetic_surface(kind, size, grid, *, short_cutoff, rms_slope=0.1, hurst=0.
     hurst : float
         Hurst exponent, 0 < H < 1 (self-affine only).
     long_cutoff : float, optional
-        Long-wavelength cutoff :math:`\\lambda_L` [m] (self-affine only; default ``size``).
+        Long-wavelength cutoff :math:`\\lambda_L` [m] in (``short_cutoff``, ``size``]
+        (self-affine only; default ``size``).
     seed : int
-        Seed of the random numbers: equal seeds give equal surfaces on every grid.
+        Seed of the random numbers, >= 0: equal seeds give equal surfaces on every grid.
 
     Returns
     -------
@@ -69,26 +73,39 @@ def synthetic_surface(kind, size, grid, *, short_cutoff, rms_slope=0.1, hurst=0.
     Raises
     ------
     ValueError
-        For an unknown kind, a grid too coarse for the cutoff, or parameters out of range.
+        For an unknown kind, a grid too coarse for the cutoff (or above :data:`MAX_GRID`), or
+        parameters out of range.
+    TypeError
+        For a seed that is not a non-negative integer.
     """
-    if kind not in SURFACE_KINDS:
+    if not isinstance(kind, str) or kind not in SURFACE_KINDS:
         raise ValueError(f"kind must be one of {SURFACE_KINDS}, got {kind!r}")
     size = check_scalar_positive(size, "size", "m")
     lam_s = check_scalar_positive(short_cutoff, "short_cutoff", "m")
     slope = check_scalar_positive(rms_slope, "rms_slope", "")
     if lam_s > size / 4:
         raise ValueError(f"short_cutoff must be at most size/4 = {size / 4:g} m, got {lam_s:g}")
-    base = 2 * math.ceil(BASE_PIXELS_PER_WAVELENGTH * size / lam_s / 2)
-    if isinstance(grid, bool) or not isinstance(grid, int | np.integer) or grid < base:
-        raise ValueError(f"grid must be an integer >= {base} ({BASE_PIXELS_PER_WAVELENGTH} points per shortest "
-                         f"wavelength), got {grid!r}")
+    ratio = size / lam_s
+    if ratio > MAX_GRID / BASE_PIXELS_PER_WAVELENGTH:
+        raise ValueError(f"size/short_cutoff = {ratio:.3g} needs more than {MAX_GRID} points per axis "
+                         f"({BASE_PIXELS_PER_WAVELENGTH} per shortest wavelength): raise short_cutoff or lower size")
+    base = 2 * math.ceil(BASE_PIXELS_PER_WAVELENGTH * ratio / 2)
+    if isinstance(grid, bool) or not isinstance(grid, int | np.integer) or not base <= grid <= MAX_GRID:
+        raise ValueError(f"grid must be an integer in [{base}, {MAX_GRID}] ({BASE_PIXELS_PER_WAVELENGTH} points per "
+                         f"shortest wavelength for size = {size:g} m, short_cutoff = {lam_s:g} m), got {grid!r}")
+    if isinstance(seed, bool) or not isinstance(seed, int | np.integer) or seed < 0:
+        raise TypeError(f"seed must be a non-negative integer, got {seed!r}")
+    if kind == "self-affine":
+        hurst = check_scalar_range(hurst, "hurst", 0.0, 1.0, what="Hurst exponent")
+        if not 0 < hurst < 1:
+            raise ValueError(f"hurst (Hurst exponent) must lie in (0, 1), got {hurst!r}")
+        lam_l = size if long_cutoff is None else check_scalar_positive(long_cutoff, "long_cutoff", "m")
+        if not lam_s < lam_l <= size:
+            raise ValueError(f"long_cutoff must lie in (short_cutoff, size] = ({lam_s:g}, {size:g}] m, got {lam_l:g}")
     st = require("SurfaceTopography", purpose="synthetic surfaces", extra="topography")
     generation = require("SurfaceTopography.Generation", purpose="synthetic surfaces", extra="topography")
     rng = np.random.default_rng(seed)
     if kind == "self-affine":
-        if not 0 < float(hurst) < 1:
-            raise ValueError(f"hurst must lie in (0, 1), got {hurst!r}")
-        lam_l = size if long_cutoff is None else check_scalar_positive(long_cutoff, "long_cutoff", "m")
         topo = generation.fourier_synthesis((base, base), (size, size), hurst=float(hurst), rms_slope=1.0,
                                             short_cutoff=lam_s, long_cutoff=lam_l, rng=rng)
     else:
