@@ -60,8 +60,14 @@ def main():
     parser.add_argument("--big", type=int, default=10_000, help="parameter sets of the large run on 2 workers "
                                                                  "(0: skip)")
     parser.add_argument("--repeat", type=int, default=3, help="best of this many runs")
+    parser.add_argument("--dask-defaults", action="store_true",
+                        help="workers with Dask's default settings instead of asperity's (LOCAL_WORKER_CONFIG)")
     args = parser.parse_args()
+    import contextlib
+
     from distributed import Client, LocalCluster
+
+    from asperity.sweeps.run import local_worker_settings
 
     asperity.sweep(**grid(16), scheduler="serial")  # imports and caches warm
     print(f"load average before: {os.getloadavg()[0]:.2f} (other jobs on the machine slow every figure)")
@@ -71,8 +77,10 @@ def main():
     print(f"grid: {n_sets} sets (alpha x gamma), {LOADS.size} loads each, adhesion; {failed} outside the domain")
     print(f"  serial       {t1:7.2f} s   {n_sets / t1:8.0f} sets/s   {t1 / n_sets * 1e3:6.2f} ms/set "
           f"({c1 / n_sets * 1e3:.2f} ms CPU)")
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                      dashboard_address=":0", silence_logs=logging.ERROR) as cluster, Client(cluster) as client:
+    settings = contextlib.nullcontext() if args.dask_defaults else local_worker_settings()  # as 'asperity sweep'
+    with settings, LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                dashboard_address=":0", silence_logs=logging.ERROR) as cluster, \
+            Client(cluster) as client:
         client.run(lambda: __import__("asperity.sweeps.compute"))
         asperity.sweep(**grid(64), scheduler=client, chunk_sets=8)  # workers warm
         t2, c2, _ = timed(args.sets, client, args.repeat)

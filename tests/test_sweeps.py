@@ -293,3 +293,20 @@ def test_out_and_points_of_a_wrong_type_are_named(tmp_path):
         with pytest.raises(error, match=needle):
             sweeps.sweep(**{**base, **kwargs})
     assert not list(tmp_path.iterdir())
+
+
+def test_the_local_cluster_runs_its_workers_with_asperity_settings(serial):
+    """The default cluster ('local') lifts Dask's malloc trim threshold (a parameter set cost
+    1.69 ms of CPU instead of 1.30 ms under Dask's 64 KiB) and switches off the worker profiler."""
+    from asperity.sweeps import run as run_module
+
+    cluster, client = run_module._local_cluster()
+    try:
+        env = client.run(lambda: os.environ.get("MALLOC_TRIM_THRESHOLD_"))
+        assert set(env.values()) == {str(128 * 2**20)}
+        profiling = client.run(lambda: __import__("dask").config.get("distributed.worker.profile.enabled"))
+        assert set(profiling.values()) == {False}
+        assert_same(asperity.sweep(**dict(grid(chunk_sets=2), scheduler=client)), serial)
+    finally:
+        client.close()
+        cluster.close()
