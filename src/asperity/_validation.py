@@ -315,6 +315,15 @@ def check_path(value, name: str, *, directory: bool = False) -> str:
     return text
 
 
+def check_positive_scaled(value, name: str, factor: float):
+    """``factor * value`` for a positive ``value`` (:func:`check_positive`), refusing by name a product
+    that overflows (e.g. :math:`K = \\tfrac43E^*` of an E* near the largest double)."""
+    value = check_positive(value, name)
+    with np.errstate(all="ignore"):
+        out = factor * value
+    return check_finite_result(out, f"{factor:g} {name}", **{name: value})
+
+
 def check_finite_result(result, what: str, **inputs):
     """``result`` unchanged if every element is finite; else a ValueError naming the inputs.
 
@@ -386,12 +395,13 @@ def check_mean_pressure(P, E_star: float, A0: float, p_range: tuple[float, float
                          f"[{lo * E_star * A0:.6g}, {hi * E_star * A0:.6g}] N, got P = {float(P[bad][0]):.6g} N")
 
 
-def check_overflow(result, name: str, limit, value):
+def check_overflow(result, name: str, limit, value, given: dict | None = None):
     """``result`` unchanged if every element is finite; else a ValueError for the input that overflowed.
 
     ``value`` is the input called ``name``; ``limit`` its largest valid value, or a function
     returning it (called only on overflow, with floating-point errors silenced), both broadcast
-    with ``result``.  The message names the first element that overflowed.  Compute ``result``
+    with ``result``.  The message names the first element that overflowed, and the other
+    inputs ``given`` (name -> value) the limit depends on.  Compute ``result``
     under ``np.errstate(over="ignore", invalid="ignore")`` so no warning precedes the error.
     """
     bad = ~np.isfinite(np.asarray(result))
@@ -401,7 +411,8 @@ def check_overflow(result, name: str, limit, value):
                 limit = limit()
         i = np.flatnonzero(bad.ravel())[0]
         lim, got = (float(np.broadcast_to(x, bad.shape).ravel()[i]) for x in (limit, value))
-        raise ValueError(f"{name} must be <= {lim:.6g} here (beyond, the result overflows double precision), "
+        context = "" if not given else " for " + ", ".join(f"{k} = {_short_repr(v)}" for k, v in given.items())
+        raise ValueError(f"{name} must be <= {lim:.6g}{context} (beyond, the result overflows double precision), "
                          f"got {got!r}")
     return result
 

@@ -243,7 +243,8 @@ def cos_alpha(lam):
     lam = as_float_array(lam, "lam")
     if np.any(lam < 0):
         raise ValueError(f"lam (Maugis parameter) must be >= 0, got {lam!r}")
-    return -np.expm1(-lam / 0.924) / 1.02
+    with np.errstate(over="ignore"):  # lam near the largest double: -lam/0.924 = -inf, alpha -> 1/1.02
+        return -np.expm1(-lam / 0.924) / 1.02
 
 
 def cos_pull_off_hat(lam):

@@ -20,10 +20,12 @@ import numpy as np
 
 from ._validation import (
     as_float_array,
+    check_broadcast,
     check_finite_result,
     check_nonnegative,
     check_overflow,
     check_positive,
+    check_positive_scaled,
     check_radius,
 )
 
@@ -238,7 +240,8 @@ def dmt_contact_radius(P, *, R, w, E_star):
     P = as_float_array(P, "P", allow_empty=True)
     R = check_positive(R, "R")
     w = check_nonnegative(w, "w")
-    K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    check_broadcast(P=P, R=R, w=w, E_star=K)
     with np.errstate(all="ignore"):
         Q = 2.0 * np.pi * w * R
     if np.any(P < -Q * (1.0 + 1e-15)):
@@ -288,7 +291,8 @@ def dmt_normal_force(delta, *, R, w, E_star):
     delta = as_float_array(delta, "delta", allow_empty=True)
     R = check_positive(R, "R")
     w = check_nonnegative(w, "w")
-    K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    check_broadcast(delta=delta, R=R, w=w, E_star=K)
     if np.any(delta < 0):
         raise ValueError("delta (penetration) must be >= 0: DMT has no contact at negative penetration")
     with np.errstate(all="ignore"):

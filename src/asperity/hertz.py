@@ -28,6 +28,7 @@ from ._validation import (
     check_overflow,
     check_poisson,
     check_positive,
+    check_positive_scaled,
     check_radius,
 )
 
@@ -136,7 +137,7 @@ def hertz_force(u_bar, alpha, beta, nu=0.3):
         P = scale * u**1.5
     # beta**2 and the scale must stay finite; then u**1.5 and the product.
     check_overflow(scale, "beta", lambda: np.sqrt(_FLOAT_MAX / np.maximum((8.0 / 3.0) / (1.0 - nu) * alpha, 1.0)),
-                   beta)
+                   beta, given={"alpha": alpha, "nu": nu})
     return check_overflow(P, "u_bar", lambda: (_FLOAT_MAX / np.maximum(scale, 1.0)) ** (2.0 / 3.0), u)
 
 
@@ -252,10 +253,13 @@ def hertz_contact_radius(P, *, R, E_star):
     """
     P = as_float_array(P, "P", allow_empty=True)
     R = check_positive(R, "R")
-    K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    check_broadcast(P=P, R=R, E_star=K)
     if np.any(P < 0):
         raise ValueError(f"P (load) must be >= 0 without adhesion (Hertz), got min {P.min():g} N")
-    return np.cbrt(P * R / K)
+    with np.errstate(all="ignore"):
+        a = np.cbrt(P * R / K)
+    return check_finite_result(a, "the Hertz contact radius", P=P, R=R, E_star=E_star)
 
 
 def hertz_normal_force(delta, *, R, E_star):
@@ -294,7 +298,8 @@ def hertz_normal_force(delta, *, R, E_star):
     """
     delta = as_float_array(delta, "delta", allow_empty=True)
     R = check_positive(R, "R")
-    K = (4.0 / 3.0) * check_positive(E_star, "E_star")
+    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    check_broadcast(delta=delta, R=R, E_star=K)
     if np.any(delta < 0):
         raise ValueError("delta (penetration) must be >= 0 without adhesion (Hertz)")
     with np.errstate(all="ignore"):

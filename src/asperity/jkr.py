@@ -21,13 +21,16 @@ import numpy as np
 
 from ._validation import (
     as_float_array,
+    check_broadcast,
     check_finite_result,
     check_nonnegative,
     check_overflow,
     check_positive,
+    check_positive_scaled,
     check_radius,
     scalar,
 )
+from .maugis_dugdale_load import penetration_in_maugis_units
 
 __all__ = ["jkr_load", "jkr_penetration", "jkr_pull_off", "jkr_solve_load", "jkr_solve", "jkr_contact_radius",
            "jkr_normal_force", "jkr_pull_off_force"]
@@ -265,7 +268,7 @@ def jkr_solve(delta):
 def _physical(R, w, E_star):
     R = check_positive(R, "R")
     w = check_nonnegative(w, "w")
-    return R, w, (4.0 / 3.0) * check_positive(E_star, "E_star")
+    return R, w, check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
 
 
 def jkr_contact_radius(P, *, R, w, E_star):
@@ -315,6 +318,7 @@ def jkr_contact_radius(P, *, R, w, E_star):
     """
     P = as_float_array(P, "P", allow_empty=True)
     R, w, K = _physical(R, w, E_star)
+    check_broadcast(P=P, R=R, w=w, E_star=K)
     with np.errstate(all="ignore"):
         Q = 3.0 * np.pi * w * R
     if np.any(P < -0.5 * Q * (1.0 + 1e-15)):
@@ -380,14 +384,9 @@ def jkr_normal_force(delta, *, R, w, E_star):
         with np.errstate(all="ignore"):
             F = K * np.sqrt(R) * delta**1.5
         return check_finite_result(F, "the Hertz force", delta=delta, R=R, E_star=E_star)
+    delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E_star)
     with np.errstate(all="ignore"):
-        scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
-        check_finite_result([scale, 1.0 / scale, np.pi * w * R], "the JKR units of length and force", R=R, w=w,
-                            E_star=E_star)
-        delta_hat = check_finite_result(delta / scale, "the penetration in JKR units", delta=delta, R=R, w=w,
-                                        E_star=E_star)
-    with np.errstate(all="ignore"):
-        F = jkr_solve(delta_hat)[1] * np.pi * w * R
+        F = jkr_solve(delta_hat)[1] * unit
     return check_finite_result(F, "the JKR force", delta=delta, R=R, w=w, E_star=E_star)
 
 

@@ -38,7 +38,8 @@ import numpy as np
 from ._validation import as_float_array, check_finite_result, check_positive, scalar
 from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
 
-__all__ = ["P_MAX", "md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force"]
+__all__ = ["P_MAX", "md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force",
+           "penetration_in_maugis_units"]
 
 #: Largest load :math:`P/(\pi wR)` :func:`md_solve_load` accepts: its radius (about
 #: :math:`P^{1/3}`) stays far below :data:`~asperity.maugis_dugdale.A_MAX` while bracketing.
@@ -175,6 +176,57 @@ def _scales(R, w, E_star, sigma0, lam):
     return R, w, (4.0 / 3.0) * E_star, lam
 
 
+def penetration_in_maugis_units(delta, *, R, w, E_star):
+    r"""A penetration in Maugis' units, and his unit of force: :math:`(\Delta, \pi wR)`.
+
+    .. math::
+        \Delta = \delta\Big(\frac{K^2}{\pi^2w^2R}\Big)^{1/3},\qquad K = \tfrac43E^*,
+
+    the units in which the JKR and Maugis-Dugdale solutions are written (loads in
+    :math:`\pi wR`).  Both units and :math:`\Delta` are checked: values of extreme
+    magnitude whose units leave double precision are refused, naming them.
+
+    Parameters
+    ----------
+    delta : array_like
+        Penetration :math:`\delta` (m).
+    R, w, E_star : float
+        Radius (m), work of adhesion (J/m^2) and contact modulus (Pa), each > 0.
+
+    Returns
+    -------
+    tuple
+        ``(Delta, force_unit)``: :math:`\Delta` (the shape of ``delta``) and :math:`\pi wR` (N).
+
+    Raises
+    ------
+    ValueError
+        If an input is not real, finite and positive (``delta`` real and finite), or a unit or
+        :math:`\Delta` leaves double precision (naming delta, R, w, E_star).
+
+    Examples
+    --------
+    >>> D, unit = penetration_in_maugis_units(np.array([1e-9]), R=1e-6, w=0.1, E_star=1e11)
+    >>> round(float(D[0]), 6), round(unit / (np.pi * 1e-7), 12)
+    (5.647539, 1.0)
+
+    References
+    ----------
+    D. Maugis, J. Colloid Interface Sci. 150 (1992) 243-269; Adams et al., Eqs (12)-(13).
+    """
+    delta = as_float_array(delta, "delta", allow_empty=True)
+    R, w, E_star = (float(scalar(check_positive(x, n), n)) for x, n in ((R, "R"), (w, "w"), (E_star, "E_star")))
+    R, w, K = np.float64(R), np.float64(w), np.float64(4.0 / 3.0) * np.float64(E_star)
+    with np.errstate(all="ignore"):
+        scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
+        unit = np.pi * w * R
+        check_finite_result([scale, 1.0 / scale, unit], "Maugis' units of length and force", R=R, w=w,
+                            E_star=E_star)
+        D = check_finite_result(delta / scale, "the penetration in Maugis' units", delta=delta, R=R, w=w,
+                                E_star=E_star)
+    return D, float(unit)
+
+
 def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     r"""Contact radius of a Maugis-Dugdale sphere on a flat at load :math:`P` (load control), in metres.
 
@@ -287,15 +339,9 @@ def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
     """
     R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
     delta = as_float_array(delta, "delta", allow_empty=True)
-    R, w, K = np.float64(R), np.float64(w), np.float64(K)  # extreme values: inf or 0, refused below
+    delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E_star)
     with np.errstate(all="ignore"):
-        scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
-        check_finite_result([scale, 1.0 / scale, np.pi * w * R], "the Maugis units of length and force", R=R, w=w,
-                            E_star=E_star)
-        delta_hat = check_finite_result(delta / scale, "the penetration in Maugis units", delta=delta, R=R, w=w,
-                                        E_star=E_star)
-    with np.errstate(all="ignore"):
-        F = md_solve(delta_hat, lam)[1] * np.pi * w * R
+        F = md_solve(delta_hat, lam)[1] * unit
     return check_finite_result(F, "the Maugis-Dugdale force", delta=delta, R=R, w=w, E_star=E_star)
 
 
