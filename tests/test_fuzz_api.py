@@ -325,7 +325,8 @@ RATIOS = {"asperity.multi_asperity.friction_coefficient", "asperity.multi_asperi
 #: Callables that return (part of) their input unchecked by design: conversions and plain data.
 PASS_THROUGH = {"asperity.units.to_si": "converts quantities and strings, passes numbers through",
                 "asperity.topography.summits.plain": "turns NumPy scalars into plain data, passes others through",
-                "asperity.units.is_quantity": "answers True or False for anything"}
+                "asperity.units.is_quantity": "answers True or False for anything",
+                "asperity.instrument.check_stiffness": "passes inf through: displacement control (documented)"}
 #: Where a message names the parameter by another word: (callable, parameter) -> the word,
 #: or a function of the valid keyword arguments giving it (a label the caller passes).
 ALIASES = {

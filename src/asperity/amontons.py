@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_broadcast, check_nonnegative
+from ._validation import as_float_array, check_broadcast, check_finite_result, check_nonnegative
 
 __all__ = ["amontons_friction"]
 
@@ -63,7 +63,10 @@ def amontons_friction(P, *, mu0, P0):
     mu0 = check_nonnegative(mu0, "mu0")
     P0 = as_float_array(P0, "P0")
     check_broadcast(P=P, mu0=mu0, P0=P0)
-    total = P + P0
+    with np.errstate(all="ignore"):
+        total = check_finite_result(P + P0, "P + P0", P=P, P0=P0)
     if np.any(total < 0):
         raise ValueError("P (load) must be >= -P0 (the adhesion offset): the friction force would be negative")
-    return mu0 * total
+    with np.errstate(all="ignore"):
+        F = mu0 * total
+    return check_finite_result(F, "the friction force", mu0=mu0, P=P, P0=P0)

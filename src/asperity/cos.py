@@ -76,7 +76,8 @@ def _shape(P, Pc, alpha_t):
         raise ValueError(f"Pc (critical load, the pull-off load) must be < 0, got {Pc!r}")
     alpha_t = check_range(alpha_t, "alpha_t", 0.0, 1.0)
     check_broadcast(P=P, Pc=Pc, alpha_t=alpha_t)
-    ratio = P / Pc
+    with np.errstate(all="ignore"):
+        ratio = check_finite_result(P / Pc, "P/Pc", P=P, Pc=Pc)
     if np.any(ratio > 1.0 + 1e-15):
         raise ValueError("P (load) must be >= Pc (the critical load, negative): no contact below it")
     return (alpha_t + np.sqrt(np.maximum(1.0 - ratio, 0.0))) / (1.0 + alpha_t)
@@ -125,7 +126,9 @@ def cos_contact_radius(P, *, a0, Pc, alpha_t):
     a0 = check_positive(a0, "a0")
     shape = _shape(P, Pc, alpha_t)
     check_broadcast(a0=a0, P=shape)
-    return a0 * shape ** (2.0 / 3.0)
+    with np.errstate(all="ignore"):
+        a = a0 * shape ** (2.0 / 3.0)
+    return check_finite_result(a, "the COS contact radius", a0=a0, P=P, Pc=Pc)
 
 
 def cos_friction(P, *, F0, Pc, alpha_t):

@@ -332,4 +332,8 @@ def dmt_pull_off_force(*, R, w):
     ----------
     Derjaguin, Muller & Toporov (1975).
     """
-    return 2.0 * np.pi * check_nonnegative(w, "w") * check_positive(R, "R")
+    w, R = check_nonnegative(w, "w"), check_positive(R, "R")
+    check_broadcast(w=w, R=R)
+    with np.errstate(all="ignore"):
+        P = 2.0 * np.pi * w * R
+    return check_finite_result(P, "the pull-off force", w=w, R=R)

@@ -422,4 +422,8 @@ def jkr_pull_off_force(*, R, w):
     ----------
     Johnson, Kendall & Roberts (1971).
     """
-    return 1.5 * np.pi * check_nonnegative(w, "w") * check_positive(R, "R")
+    w, R = check_nonnegative(w, "w"), check_positive(R, "R")
+    check_broadcast(w=w, R=R)
+    with np.errstate(all="ignore"):
+        P = 1.5 * np.pi * w * R
+    return check_finite_result(P, "the pull-off force", w=w, R=R)

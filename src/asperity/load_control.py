@@ -337,7 +337,8 @@ def _branch_guess(P, grid, Pg, dPg):
         j = np.clip(np.argmax(Pg[None, :] <= P[:, None], axis=1), 1, n - 1)
     a, b = grid[j - 1].copy(), grid[j].copy()
     nonzero = np.abs(P[P != 0])
-    s = max(1e-3 * (nonzero.min() if nonzero.size else np.abs(Pg).max()), 1e-300)
+    big = max(float(np.abs(P).max(initial=0.0)), float(np.abs(Pg).max()))
+    s = max(1e-3 * (nonzero.min() if nonzero.size else np.abs(Pg).max()), 1e-300, 1e-300 * big)  # P/s <= 1e300
     y = np.arcsinh(P / s)
     ya, yb = np.arcsinh(Pg[j - 1] / s), np.arcsinh(Pg[j] / s)
     h = b - a

@@ -394,4 +394,6 @@ def md_pull_off_force(*, R, w, E_star, sigma0=None, lam=None, control: str = "lo
     Maugis (1992); Johnson & Greenwood (1997).
     """
     R, w, _, lam = _scales(R, w, E_star, sigma0, lam)
-    return -md_pull_off(lam, control).P * np.pi * w * R
+    with np.errstate(all="ignore"):
+        F = -md_pull_off(lam, control).P * np.pi * np.float64(w) * R
+    return check_finite_result(F, "the pull-off force", w=w, R=R)

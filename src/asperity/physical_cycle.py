@@ -269,7 +269,9 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     d_max = _length(d_max, "d_max")
     u_in_m = _length(u_in, "u_in", required=True)
     if preload is not None:
-        preload = check_scalar_positive(preload, "preload", "N") / fs
+        preload = check_scalar_positive(preload, "preload", "N")
+        with np.errstate(all="ignore"):
+            preload = float(check_finite_result(np.float64(preload) / fs, "preload/(N G b^2)", preload=preload))
     k = _stiffness(contact, stiffness)
     if d is not None:
         d = as_float_array(to_si(d, "m", "d"), "d").ravel()
@@ -346,7 +348,9 @@ def physical_preload_curve(contact: PhysicalContact, preload, *, d_max=None, u_i
     u_in_m = _length(u_in, "u_in", required=True)
     try:
         ci = CycleIntegrals(contact.model, u_in_m / sigma)
-        res = compute_preload_curve(ci, P / fs, d_max=None if d_max is None else d_max / sigma)
+        with np.errstate(all="ignore"):
+            P_bar = check_finite_result(P / fs, "preload/(N G b^2)", preload=P)
+        res = compute_preload_curve(ci, P_bar, d_max=None if d_max is None else d_max / sigma)
     except ValueError as err:
         raise _scaled(contact, err) from None
     energy = fs * sigma

@@ -88,7 +88,8 @@ def mixture_stats(weights, means, sds) -> tuple[float, float, float, float]:
     var = float(np.sum(w * (s * s + c * c)))
     mu3 = float(np.sum(w * (c**3 + 3 * c * s * s)))
     mu4 = float(np.sum(w * (c**4 + 6 * c * c * s * s + 3 * s**4)))
-    return mean, var, mu3 / var**1.5, mu4 / var**2
+    v = np.float64(var)  # NumPy arithmetic: an overflow is inf under the caller's errstate, not OverflowError
+    return mean, var, float(mu3 / v**1.5), float(mu4 / v**2)
 
 
 def mixture_weighted_sums(d, u, W, order, weights, means, sds):

@@ -84,7 +84,7 @@ def distribution(name: str, **params) -> HeightDistribution:
         raise ValueError(f"heights: the distribution name must be a string, got {name!r}")
     key = name.strip().lower()
     if key not in DISTRIBUTIONS:
-        raise ValueError(f"heights: unknown distribution {name!r}; valid: {', '.join(DISTRIBUTIONS)}")
+        raise ValueError(f"name: unknown height distribution {name!r}; valid: {', '.join(DISTRIBUTIONS)}")
     cls = DISTRIBUTIONS[key]
     if cls is Empirical:
         if set(params) != {"file"}:

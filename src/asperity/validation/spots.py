@@ -15,13 +15,18 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validation import check_bool
+
 __all__ = ["count_spots", "label_spots"]
 
 
 def _mask(contact) -> np.ndarray:
     if isinstance(contact, bool) or not hasattr(contact, "__len__"):
         raise TypeError(f"contact must be a 2-d boolean array, got {type(contact).__name__}")
-    mask = np.asarray(contact)
+    try:
+        mask = np.asarray(contact)
+    except ValueError:  # ragged nested lists
+        raise TypeError("contact must be a 2-d boolean array, got a ragged sequence") from None
     if mask.dtype != bool:
         raise TypeError(f"contact must be a boolean array (True in contact), got dtype {mask.dtype}")
     if mask.ndim != 2:
@@ -57,6 +62,7 @@ def label_spots(contact, *, periodic: bool) -> tuple[np.ndarray, int]:
     from scipy import ndimage
 
     mask = _mask(contact)
+    periodic = check_bool(periodic, "periodic")
     labels, n = ndimage.label(mask)  # 4-connectivity: the default cross-shaped structure
     if not periodic or n == 0:
         return labels, int(n)
