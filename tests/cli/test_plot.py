@@ -175,3 +175,22 @@ def test_heat_map_errors(capsys, tmp_path, sweep_file, argv, needle):
 def test_heat_map_of_a_missing_file(capsys, tmp_path):
     code, _, err = run(capsys, "plot", str(tmp_path / "none.nc"), "--x", "a", "--y", "b", "--z", "c")
     assert one_line_error(code, err, "no such sweep")
+
+
+def test_heat_map_names_a_bad_z_before_it_names_the_default_file(capsys, tmp_path, sweep_file, monkeypatch):
+    """Found by the random CLI fuzz: ``--z Au/Au`` without ``-o`` made the default output
+    ``Au/Au.png`` in a directory that does not exist (a traceback instead of status 2)."""
+    pytest.importorskip("matplotlib")
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "Au/Au")
+    assert one_line_error(code, err, "not a variable"), err
+    assert not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("command", [["plot", "{store}", "--x", "alpha", "--y", "gamma", "--z", "pull_off"],
+                                     ["load", *MODEL, "--P", "1"]])
+def test_output_into_a_missing_directory_is_refused(capsys, tmp_path, sweep_file, command):
+    argv = [a.format(store=sweep_file) for a in command]
+    code, _, err = run(capsys, *argv, "-o", str(tmp_path / "missing" / "out.png"))
+    assert one_line_error(code, err, "does not exist"), err
+    assert not (tmp_path / "missing").exists()

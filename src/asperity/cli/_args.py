@@ -111,11 +111,14 @@ CONTACT_OPTIONS = (*BODY_OPTIONS, *SURFACE_OPTIONS)
 
 # -- paths ---------------------------------------------------------------------------------
 def output_file(text: str) -> str:
-    """argparse type of ``-o FILE`` and ``--plot FILE``: not empty, not a directory."""
+    """argparse type of ``-o FILE`` and ``--plot FILE``: not empty, not a directory, in a directory that exists."""
     if text == "":
         raise argparse.ArgumentTypeError("expected a file name, got ''")
     if os.path.isdir(text):
         raise argparse.ArgumentTypeError(f"{text!r} is a directory; give a file name")
+    parent = os.path.dirname(text)
+    if parent and not os.path.isdir(parent):
+        raise argparse.ArgumentTypeError(f"{text!r}: the directory {parent!r} does not exist")
     return text
 
 

@@ -137,13 +137,17 @@ def run(args) -> None:
     if not os.path.exists(args.store):
         raise UsageError(f"no such sweep: {args.store!r}")
     at = _at(args.at)
-    path = args.output or f"{args.z}.png"
-    fmt = image_format(path)
     zarr = args.store.rstrip("/").endswith(".zarr")
     try:
         ds = xr.open_zarr(args.store, consolidated=False) if zarr else xr.open_dataset(args.store)
     except (OSError, ValueError) as err:
         raise UsageError(f"cannot read the sweep {args.store!r}: {err}") from None
-    with ds, atomic_path(path) as tmp:
-        heat_map(ds, args.x, args.y, args.z, at, tmp, fmt)
+    with ds:
+        if args.z not in ds.data_vars or args.z == "message":  # before it names the default output file
+            raise UsageError(f"--z: {args.z!r} is not a variable of the sweep; it has "
+                             f"{', '.join(v for v in ds.data_vars if v not in ('message', 'chunk_done'))}")
+        path = args.output or f"{args.z}.png"
+        fmt = image_format(path)
+        with atomic_path(path) as tmp:
+            heat_map(ds, args.x, args.y, args.z, at, tmp, fmt)
     print(f"wrote {path}")
