@@ -202,8 +202,8 @@ def valid_calls(tmp: str) -> dict:
         "asperity.topography.detected.detected_summit_heights": lambda: {"topography": _bem_topography()},
         # interacting asperities, Persson's and BGT's areas
         "asperity.icha.contact.icha_contact": lambda: {"topography": _bem_topography(), "P": [1e-3], "E_star": 1e11},
-        "asperity.icha.summits.map_summits": lambda: {"heights": _bem_topography().heights(), "pixel_size": 2.5e-7,
-                                                      "periodic": True},
+        "asperity.icha.summits.map_summits": lambda: {"heights": _bem_topography().heights(),
+                                                      "pixel_size": (2.5e-7, 2.5e-7), "periodic": True},
         "asperity.persson.persson_area_fraction": lambda: {"p": [1e5, 1e6], "E_star": 1e11, "rms_slope": 0.1},
         "asperity.persson.bgt_area_fraction": lambda: {"p": [1e5, 1e6], "E_star": 1e11, "rms_slope": 0.1},
         "asperity.persson.rms_slope": lambda: {"topography": _bem_topography()},

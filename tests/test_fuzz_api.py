@@ -35,6 +35,7 @@ import math
 import os
 import pkgutil
 import re
+import tempfile
 
 import numpy as np
 import pytest
@@ -448,7 +449,22 @@ def _show(value) -> str:
 
 
 def check_contract(target: str, func, kwargs: dict, name: str, bad) -> None:
-    """Call ``func(**kwargs)`` with ``kwargs[name] = bad`` and assert the contract of the module docstring."""
+    """Call ``func(**kwargs)`` with ``kwargs[name] = bad`` and assert the contract of the module docstring.
+
+    The call runs in a fresh temporary working directory: a bad value that is a relative
+    file name ('abc', a bytes path) writes there, never into the checkout, and cannot be
+    read back by a later call.
+    """
+    with tempfile.TemporaryDirectory() as cwd:
+        old = os.getcwd()
+        os.chdir(cwd)
+        try:
+            _check_contract(target, func, kwargs, name, bad)
+        finally:
+            os.chdir(old)
+
+
+def _check_contract(target: str, func, kwargs: dict, name: str, bad) -> None:
     call = {**kwargs, name: bad}
     shown = f"{target}({name}={_show(bad)})"
     try:

@@ -122,7 +122,7 @@ def test_size_effect_from_the_table_and_explicit():
 
 
 @pytest.mark.parametrize("kwargs, match", [
-    ({"size_effect": True}, r"size effect needs the Nix-Gao pair H0 and h_star; material 'Au'"),
+    ({"size_effect": True}, r"size_effect=True \(the size effect\) needs the Nix-Gao pair H0 and h_star"),
     ({"size_effect": False, "h_star": 1e-6}, r"h_star \(Nix-Gao length\) needs size_effect=True"),
     ({"size_effect": "yes"}, r"size_effect must be True, False or None"),
     ({"plasticity": "kogut-etsion"}, r"plasticity must be a law name, one of elastic, jackson-green"),

@@ -177,7 +177,8 @@ def resolve_plasticity(material: Material, plasticity, hardness, size_effect, h_
         H = material.H0 if hardness is None else check_scalar_positive(hardness, "hardness (H0)", "Pa")
         h = material.h_star if h_star is None else check_scalar_positive(h_star, "h_star", "m", allow_zero=True)
         if H is None or h is None:
-            raise ValueError(f"the size effect needs the Nix-Gao pair H0 and h_star; material {material.name!r} "
+            raise ValueError(f"size_effect=True (the size effect) needs the Nix-Gao pair H0 and h_star; material "
+                             f"{material.name!r} "
                              f"has H0 = {material.H0!r}, h_star = {material.h_star!r}: give hardness= (H0, Pa) "
                              "and h_star= (m)")
     if LAWS[name].plastic and H is None:

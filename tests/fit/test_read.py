@@ -127,7 +127,7 @@ def test_dataset_checks_its_arrays():
         force_separation_data([1.0], [np.nan])
     with pytest.raises(ValueError, match="^P must be a real number"):
         friction_load_data([True], [1.0])
-    with pytest.raises(ValueError, match="condition 'alpha' must have one value per row"):
+    with pytest.raises(ValueError, match=r"conditions\['alpha'\] must have one value per row"):
         pull_off_data([1.0, 2.0], conditions={"alpha": [0.1]})
     with pytest.raises(ValueError, match="kind must be one of"):
         Dataset("wear", [1.0], [1.0], "F")

@@ -107,10 +107,10 @@ class Dataset:
                 if np.any(err <= 0):
                     raise ValueError(f"{name} (uncertainty) must be > 0 in every row, got min {err.min():g}")
                 set_(self, name, err)
-        conditions = {str(k): _vector(v, k) for k, v in dict(self.conditions).items()}
+        conditions = {str(k): _vector(v, f"conditions[{k!r}]") for k, v in dict(self.conditions).items()}
         for k, v in conditions.items():
             if v.size != x.size:
-                raise ValueError(f"condition {k!r} must have one value per row ({x.size}), got {v.size}")
+                raise ValueError(f"conditions[{k!r}] must have one value per row ({x.size}), got {v.size}")
         set_(self, "conditions", conditions)
         set_(self, "physical", bool(self.physical))
         set_(self, "notes", tuple(str(n) for n in self.notes))

@@ -368,5 +368,8 @@ def as_dataset(data, kind=None, units=None, drop_nan=False) -> Dataset:
             raise ValueError(f"expected {_KIND_NAMES[kind]} data, got {_KIND_NAMES[data.kind]} data ({data.name})")
         return data
     if isinstance(data, str | os.PathLike):
-        return read_data(data, kind=kind, units=units, drop_nan=drop_nan)
+        try:
+            return read_data(data, kind=kind, units=units, drop_nan=drop_nan)
+        except ValueError as err:
+            raise ValueError(f"data: {err}") from None
     raise ValueError(f"data must be a Dataset or the path of a CSV file, got {type(data).__name__}")

@@ -135,6 +135,9 @@ def _client(scheduler):
             cluster.close()
         return client, close
     if isinstance(scheduler, str):
+        if ":" not in scheduler.strip():
+            raise ValueError(f"scheduler must be None, 'serial', 'local' or a scheduler address such as "
+                             f"'tcp://host:8786', got {scheduler!r}")
         distributed = require("distributed", purpose="sweeps on Dask")
         try:
             client = distributed.Client(scheduler, timeout=CONNECT_TIMEOUT)

@@ -163,7 +163,10 @@ class SurfaceValidation:
 
 def _topography(surface, read_kwargs):
     if isinstance(surface, str | os.PathLike):
-        return read_topography(surface, **read_kwargs), os.fsdecode(os.fspath(surface))
+        try:
+            return read_topography(surface, **read_kwargs), os.fsdecode(os.fspath(surface))
+        except ValueError as err:
+            raise ValueError(f"surface: {err}") from None
     if read_kwargs:
         raise TypeError(f"{sorted(read_kwargs)} only apply when reading a file")
     if not all(hasattr(surface, a) for a in ("heights", "dim", "nb_grid_pts", "detrend")):
