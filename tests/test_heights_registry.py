@@ -100,7 +100,7 @@ def test_not_a_spelling(bad):
 
 def test_distribution_by_name():
     assert distribution("Pearson3", skew=0.2) == PearsonIII(0.2)
-    with pytest.raises(ValueError, match="unknown distribution 'x'; valid: gaussian, exponential"):
+    with pytest.raises(ValueError, match="unknown height distribution 'x'; valid: gaussian, exponential"):
         distribution("x")
     with pytest.raises(ValueError, match="empirical takes exactly one parameter, file"):
         distribution("empirical", skew=1.0)

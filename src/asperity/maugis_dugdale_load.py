@@ -396,4 +396,4 @@ def md_pull_off_force(*, R, w, E_star, sigma0=None, lam=None, control: str = "lo
     R, w, _, lam = _scales(R, w, E_star, sigma0, lam)
     with np.errstate(all="ignore"):
         F = -md_pull_off(lam, control).P * np.pi * np.float64(w) * R
-    return check_finite_result(F, "the pull-off force", w=w, R=R)
+    return float(check_finite_result(F, "the pull-off force", w=w, R=R))

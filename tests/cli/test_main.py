@@ -25,7 +25,7 @@ from .helpers import AU, MODEL, one_line_error, rows_of, run
     (["md", "--lam", "1", "--delta", "-5"], "delta"),
     (["separation", "--alpha", "x", "--beta", "10", "--d", "0"], "alpha"),
     (["separation", "--alpha", "0.01", "--beta", "10", "--d", "0", "-o", "/nonexistent/dir/f"],
-     "cannot write"),
+     "does not exist"),
     (["nosuchcommand"], "nosuchcommand"),
 ])
 def test_errors_one_line_status_2(capsys, argv, needle):
