@@ -350,6 +350,7 @@ SKIP = {
                     "asperity.explorer.controls.FlagControl", "asperity.explorer.controls.make_control",
                     "asperity.explorer.panels.optional_panels", "asperity.explorer.panels.cycle_panel",
                     "asperity.explorer.panels.CyclePanel", "asperity.explorer.plots.Plots",
+                    "asperity.explorer.fit_panel.FitPanel", "asperity.explorer.fit_panel.fit_panel",
                     "asperity.explorer.compute.compute", "asperity.explorer.compute.height_distribution",
                     "asperity.explorer.compute.friction_law", "asperity.explorer.compute.loads",
                     "asperity.explorer.compute.separations", "asperity.explorer.compute.build_subject",

@@ -203,3 +203,30 @@ def test_cycle_panel_in_the_browser(page, server):
     np.testing.assert_allclose(shown["P"], ref.retract.P, rtol=1e-12)
     np.testing.assert_allclose(source_data(page, "cycle:approach")["d"], ref.approach.d, rtol=1e-12)
     assert_plotted(page, *library_curves(p)[:2])  # the other plots are untouched
+
+
+def test_fit_panel_in_the_browser(page, server, tmp_path):
+    """A friction-load file uploaded through the page and fitted: the plotted fit is asperity.fit's."""
+    pytest.importorskip("lmfit")
+    import asperity
+    from asperity.fit import fit_friction_load
+
+    P = np.geomspace(1.0, 1e4, 20)
+    F = asperity.Model(0.01, 1000.0, 1e-3).load_curve(P).F * (1 + 0.02 * np.random.default_rng(1).standard_normal(20))
+    path = tmp_path / "afm.csv"
+    path.write_text("P,F,F_err\n" + "".join(f"{p!r},{f!r},{0.02 * f!r}\n" for p, f in zip(P.tolist(), F.tolist(),
+                                                                                          strict=True)))
+    load(page, server.url + "?n=40&alpha=0.02&beta=800&gamma=0.002")
+    page.locator(".asp-toggle-fit input").check()
+    page.locator(".asp-fit-file input").set_input_files(str(path))
+    page.wait_for_function("() => { const m = Bokeh.documents[0].get_model_by_name('fit:data'); "
+                           "return m && m.data.P.length === 20; }")
+    page.locator(".asp-fit-run button").click()
+    page.wait_for_function("() => { const m = Bokeh.documents[0].get_model_by_name('fit:curve'); "
+                           "return m && m.data.F.length > 0; }", timeout=60_000)
+    p = params(page)
+    fixed = {k: float(p[k]) for k in ("nu", "h_over_b", "tau_f1", "tau_f2", "a1", "a2")}
+    ref = fit_friction_load(str(path), "gw", start={k: float(p[k]) for k in ("alpha", "beta", "gamma")}, fix=fixed,
+                            vary=("alpha", "beta", "gamma"))
+    np.testing.assert_allclose(source_data(page, "fit:curve")["F"], ref.curve.F, rtol=1e-9)
+    np.testing.assert_allclose(source_data(page, "fit:data")["P"], P, rtol=1e-15)

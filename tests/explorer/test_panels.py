@@ -37,6 +37,11 @@ def fake_cycle_module(calls, fail=None):
     return module
 
 
+def cycle_of(session):
+    """The session's approach/retract panel (the fit panel may stand beside it)."""
+    return next(p for p in session.panels if isinstance(p, panels.CyclePanel))
+
+
 @pytest.fixture()
 def with_cycle(monkeypatch):
     def install(module):
@@ -51,14 +56,14 @@ def with_cycle(monkeypatch):
 def test_no_cycle_no_panel():
     assert panels.cycle_panel() is None
     s = ExplorerSession(Document(), None, runner=immediate_runner)
-    assert s.panels == []
+    assert not [p for p in s.panels if isinstance(p, panels.CyclePanel)]
 
 
 def test_cycle_panel_is_off_until_asked_then_plots_each_branch(with_cycle):
     calls = []
     with_cycle(fake_cycle_module(calls))
     s = ExplorerSession(Document(), "n=20&alpha=0.004&nu=0.25", runner=immediate_runner)
-    (panel,) = s.panels
+    panel = cycle_of(s)
     assert isinstance(panel, panels.CyclePanel) and calls == [] and panel.figure not in panel.layout.children
     panel.toggle.active = True  # the user asks for it: the same view, with the cycle
     assert panel.figure in panel.layout.children and len(calls) == 1
@@ -77,7 +82,7 @@ def test_cycle_panel_is_off_until_asked_then_plots_each_branch(with_cycle):
 def test_a_failing_panel_is_a_message_not_a_crash(with_cycle):
     with_cycle(fake_cycle_module([], fail="no retract branch for these loads"))
     s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
-    s.panels[0].toggle.active = True
+    cycle_of(s).toggle.active = True
     assert s.failure is None and "no retract branch" in s.page.messages_html
     assert 'class="warning"' in s.page.messages_html
 
@@ -89,7 +94,7 @@ def test_real_cycle_panel():
     panel = panels.cycle_panel()
     assert panel is not None, "asperity.cycle exists but has no cycle(): update explorer/panels.py"
     s = ExplorerSession(Document(), "n=30", runner=immediate_runner)
-    s.panels[0].toggle.active = True
+    cycle_of(s).toggle.active = True
     assert s.failure is None, s.failure
     ref = cycle(0.003, 1000.0, 1e-3, preload=1e5, n=30)
-    np.testing.assert_allclose(s.panels[0].sources["retract"].data["P"], ref.retract.P, rtol=1e-12)
+    np.testing.assert_allclose(cycle_of(s).sources["retract"].data["P"], ref.retract.P, rtol=1e-12)

@@ -158,6 +158,8 @@ class ExplorerSession:
         self.panels = [panel for make in optional_panels() if (panel := make()) is not None]
         for panel in self.panels:
             panel.toggle.on_change("active", partial(self._toggled, panel))
+            if hasattr(panel, "apply_to"):  # a panel that sets parameters (the fit panel's fitted values)
+                panel.apply_to = self.set_values
         doc.add_root(self._layout())
         doc.add_root(self.page)
         doc.title = "asperity explore"
@@ -215,6 +217,14 @@ class ExplorerSession:
         self.pending = self.pending.replace(**changes)
         if key in ("mode", "heights"):
             self._show_mode(self.pending)
+        self.link_messages = []
+        self.request()
+
+    def set_values(self, values: dict) -> None:
+        """Several parameters at once (a fit's values): the controls show them and the view updates."""
+        for key, value in values.items():
+            self.controls[key].set(value)
+        self.pending = self.pending.replace(**values)
         self.link_messages = []
         self.request()
 

@@ -14,9 +14,9 @@ and otherwise an object with
   becomes a message on the page);
 * ``show(data)``: puts what ``compute`` returned into its figures, on the page's thread.
 
-The approach/retract panel needs :mod:`asperity.cycle` (loading/unloading cycles); a fit
-panel would follow the same pattern.  Both capabilities are written alongside the
-explorer, so the panels look their module up when a page opens, never at import.
+The approach/retract panel needs :mod:`asperity.cycle` (loading/unloading cycles); the fit
+panel (:mod:`asperity.explorer.fit_panel`) needs :mod:`asperity.fit` and lmfit.  The panels
+look their module up when a page opens, never at import.
 """
 
 from __future__ import annotations
@@ -121,8 +121,15 @@ def cycle_panel():
     return CyclePanel(cycle)
 
 
+def _fit_panel():
+    """The fit panel (:mod:`asperity.explorer.fit_panel`), or None without :mod:`asperity.fit` and lmfit."""
+    from .fit_panel import fit_panel
+
+    return fit_panel()
+
+
 #: Factories of the optional panels, in page order.
-OPTIONAL_PANELS = (cycle_panel,)
+OPTIONAL_PANELS = (cycle_panel, _fit_panel)
 
 
 def optional_panels():
