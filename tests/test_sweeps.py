@@ -307,6 +307,10 @@ def test_the_local_cluster_runs_its_workers_with_asperity_settings(serial):
         profiling = client.run(lambda: __import__("dask").config.get("distributed.worker.profile.enabled"))
         assert set(profiling.values()) == {False}
         assert_same(asperity.sweep(**dict(grid(chunk_sets=2), scheduler=client)), serial)
+        client.restart()  # a restarted worker (after a crash) keeps the settings
+        assert set(client.run(lambda: os.environ.get("MALLOC_TRIM_THRESHOLD_")).values()) == {str(128 * 2**20)}
+        profiling = client.run(lambda: __import__("dask").config.get("distributed.worker.profile.enabled"))
+        assert set(profiling.values()) == {False}
     finally:
         client.close()
         cluster.close()

@@ -216,10 +216,40 @@ def test_help_and_startup(capsys):
     assert res.stdout.strip().splitlines()[-1] == "[]"
 
 
-@pytest.mark.parametrize("extra", [["--law", "jackson-green"], ["--heights", "exponential"], ["--hardness", "1GPa"],
-                                   ["--size-effect"], ["--heights", "weibull:skew=0.5", "--law", "elastic"]])
+@pytest.mark.parametrize("extra", [["--law", "jackson-green"], ["--hardness", "1GPa"], ["--size-effect"],
+                                   ["--heights", "weibull:skew=0.5", "--law", "elastic"]])
 def test_contact_options_without_a_contact_are_refused(capsys, line, extra):
     """The law and height options of a physical contact are refused without one, never ignored."""
     code, out, err = run(capsys, "fit", str(line), "--model", "amontons", *extra)
     assert out == "" and one_line_error(code, err, "only to the rough-surface model with a physical contact")
     assert all(option in err for option in extra if option.startswith("--"))  # each one named
+
+
+def test_heights_of_the_dimensionless_gw_fit(capsys, tmp_path):
+    """--heights without a physical contact fits the dimensionless gw model with those summit
+    heights, exactly as GWFit(heights=...) in the API; the single-asperity laws refuse it."""
+    import json
+
+    from asperity.fit import fit_friction_load
+    from asperity.fit.gw import GWFit
+    from asperity.heights import Weibull
+
+    model = asperity.Model(0.01, 1000.0, 1e-3, heights=Weibull(skew=0.5))
+    P = np.geomspace(1.0, 1e4, 15)
+    F = model.load_curve(P).F * (1 + 0.02 * np.random.default_rng(4).standard_normal(P.size))
+    path = tmp_path / "w.csv"
+    path.write_text("P,F,F_err\n" + "".join(f"{p!r},{f!r},{0.02 * f!r}\n" for p, f in zip(P.tolist(), F.tolist(),
+                                                                                          strict=True)))
+    code, out, err = run(capsys, "fit", str(path), "--heights", "weibull:skew=0.5", "--format", "json")
+    assert code == 0, err
+    got = json.loads(out)
+    ref = fit_friction_load(str(path), GWFit(heights=Weibull(skew=0.5)))
+    assert got["model"] == ref.model == "gw (heights weibull:skew=0.5)"
+    for name in ("alpha", "beta", "gamma"):
+        assert got["parameters"][name]["value"] == pytest.approx(ref.values[name], rel=1e-12)
+    gaussian = fit_friction_load(str(path), "gw")
+    assert gaussian.values["alpha"] != pytest.approx(ref.values["alpha"], rel=1e-6)  # the heights matter
+    code, out, err = run(capsys, "fit", str(path), "--heights", "exponential", "--model", "jkr")
+    assert out == "" and one_line_error(code, err, "--heights applies to the rough-surface model gw")
+    code, out, err = run(capsys, "fit", str(path), "--heights", "exponential", "--compare", "gw,amontons")
+    assert code == 0 and "gw (heights exponential)" in out, err

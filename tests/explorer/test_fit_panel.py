@@ -85,12 +85,28 @@ def test_bad_files_are_messages(tmp_path, content, needle):
     assert "/tmp" not in panel.info.text and "bad.csv" in panel.info.text  # the user's file, no server paths
 
 
-def test_physical_mode_and_other_heights_do_not_fit(tmp_path):
+def test_the_views_summit_heights_are_fitted_with(tmp_path):
+    from asperity.fit.gw import GWFit
+    from asperity.heights import Exponential
+
     path = friction_csv(tmp_path)
-    s = ExplorerSession(Document(), "n=20&heights=exponential", runner=immediate_runner)
+    s = ExplorerSession(Document(), "n=20&heights=exponential&alpha=0.02", runner=immediate_runner)
     panel = fit_of(s)
     panel.toggle.active = True
     upload(panel, path)
-    assert panel.run_fit() is None and "Gaussian summit heights" in panel.info.text
+    r = panel.run_fit()
+    ref = fit_friction_load(str(path), GWFit(heights=Exponential()), start={"alpha": 0.02, "beta": 1000.0,
+                                                                           "gamma": 1e-3}, vary=FIT_VARY)
+    assert r.model == ref.model == "gw (heights exponential)"
+    for name in FIT_VARY:
+        assert r.values[name] == pytest.approx(ref.values[name], rel=1e-9)
+
+
+def test_physical_mode_does_not_fit(tmp_path):
+    path = friction_csv(tmp_path)
+    s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
+    panel = fit_of(s)
+    panel.toggle.active = True
+    upload(panel, path)
     s.on_value("mode", "physical")
     assert panel.run_button.disabled and "dimensionless" in panel.info.text

@@ -140,3 +140,25 @@ def test_gw_fit_model_keeps_every_setting_of_the_contact(kwargs):
     F, clamped = model.friction(P, values)
     np.testing.assert_allclose(F, contact.load_curve(P).F, rtol=1e-12)
     assert not clamped
+
+
+def test_gw_with_other_heights_predicts_the_library():
+    """GWFit(heights=...) evaluates the dimensionless Model with those heights; a physical fit
+    refuses them (the contact's are used)."""
+    from asperity.fit.gw import GWFit
+    from asperity.heights import PearsonIII
+
+    h = PearsonIII(skew=0.8)
+    P = np.geomspace(1.0, 1e3, 6)
+    v = {"alpha": 0.01, "beta": 1000.0, "gamma": 1e-3, "nu": 0.3, "h_over_b": 1.0, "tau_f1": 1 / 43,
+         "tau_f2": 1 / 43 / 30, "a1": 28.0, "a2": 8e4}
+    got = GWFit(heights=h).friction(P, v)[0]
+    np.testing.assert_allclose(got, asperity.Model(0.01, 1000.0, 1e-3, heights=h).load_curve(P).F, rtol=1e-13)
+    assert not np.allclose(got, asperity.load_curve(P, 0.01, 1000.0, 1e-3).F, rtol=1e-3)
+    from asperity.physical import PhysicalContact, Surface
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
+    with pytest.raises(ValueError, match="^heights: a physical fit takes the contact's summit heights"):
+        GWFit(contact=contact, heights=h)
+    with pytest.raises((TypeError, ValueError), match="^heights must be a HeightDistribution"):
+        GWFit(heights="weibull")

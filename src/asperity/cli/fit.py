@@ -12,12 +12,12 @@ from __future__ import annotations
 import argparse
 
 from ._args import BODY_OPTIONS, SURFACE_OPTIONS, UsageError, add_contact_arguments, output_file, quantity
-from ._build import contact_from_args, material_from_args
+from ._build import contact_from_args, heights_from_args, material_from_args
 
 #: The options that make a rough surface (--R alone is the tip radius of the single-asperity laws).
 SURFACE_ONLY = tuple(name for name in SURFACE_OPTIONS if name != "R")
 #: Options of the contact's per-asperity law and heights (argument names).
-CONTACT_ONLY = ("law", "hardness", "h_star", "size_effect", "plastic_threshold", "heights", "interaction")
+CONTACT_ONLY = ("law", "hardness", "h_star", "size_effect", "plastic_threshold", "interaction")
 
 
 def _given(args, names) -> bool:
@@ -154,7 +154,8 @@ def _options(args):
             verb = "applies" if len(unused) == 1 else "apply"
             raise UsageError(f"{', '.join(unused)} {verb} only to the rough-surface model with a physical contact "
                              "(--material/--E ... with --sigma-s, --R, --eta, --area or --surface FILE); "
-                             "the single-asperity laws and the dimensionless gw fit take none of them")
+                             "the single-asperity laws and the dimensionless gw fit take none of them "
+                             "(the dimensionless gw fit takes --heights)")
     if _given(args, BODY_OPTIONS):  # the bodies: E* of the single-asperity laws
         material = material_from_args(args)
     if args.R is not None:  # the tip radius of the single-asperity laws
@@ -163,6 +164,19 @@ def _options(args):
     return {"vary": vary, "fix": fix, "start": start, "bounds": _bounds(args.bounds), "contact": contact,
             "material": material, "weights": args.weights, "loss": args.loss, "ci": args.ci,
             "restarts": args.restarts}
+
+
+def _with_heights(names, args, contact):
+    """The model names with 'gw' replaced by a GWFit of ``--heights`` (a physical contact has them already)."""
+    if getattr(args, "heights", None) is None or contact is not None:
+        return names
+    if "gw" not in [str(n).strip().lower() for n in names]:
+        raise UsageError("--heights applies to the rough-surface model gw (the single-asperity laws have one "
+                         "asperity, no summit heights)")
+    from ..fit.gw import GWFit
+
+    gw = GWFit(heights=heights_from_args(args))
+    return [gw if str(n).strip().lower() == "gw" else n for n in names]
 
 
 def run(args) -> None:
@@ -179,13 +193,13 @@ def run(args) -> None:
     if args.compare is not None:
         if len(datasets) > 1:
             raise UsageError("--compare fits one DATA file")
-        result = compare_models(datasets[0], _names(args.compare, "--compare"), **opts)
+        result = compare_models(datasets[0], _with_heights(_names(args.compare, "--compare"), args, contact), **opts)
         listed = result.to_list()
         text = format_json(listed if contact is None else {"contact": contact.to_dict(), "results": listed}) \
             if args.format == "json" else result.summary() + "\n" + "\n".join(r.summary() for r in result.results)
         best = result.best
     else:
-        model = args.model or "gw"
+        (model,) = _with_heights([args.model or "gw"], args, contact)
         if len(datasets) > 1:
             best = fit_joint(datasets, model, shared=_names(args.shared, "--shared"), **opts)
         else:

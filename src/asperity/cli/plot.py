@@ -61,7 +61,7 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
 
     from ..quantities import quantity
 
-    if z not in ds.data_vars or z == "message":
+    if z not in ds.data_vars or z in ("message", "chunk_done"):
         raise UsageError(f"--z: {z!r} is not a variable of the sweep; it has "
                          f"{', '.join(v for v in ds.data_vars if v not in ('message', 'chunk_done'))}")
     var = ds[z]
@@ -143,7 +143,7 @@ def run(args) -> None:
     except (OSError, ValueError) as err:
         raise UsageError(f"cannot read the sweep {args.store!r}: {err}") from None
     with ds:
-        if args.z not in ds.data_vars or args.z == "message":  # before it names the default output file
+        if args.z not in ds.data_vars or args.z in ("message", "chunk_done"):  # before the default output file
             raise UsageError(f"--z: {args.z!r} is not a variable of the sweep; it has "
                              f"{', '.join(v for v in ds.data_vars if v not in ('message', 'chunk_done'))}")
         path = args.output or f"{args.z}.png"

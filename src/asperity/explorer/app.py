@@ -160,6 +160,8 @@ class ExplorerSession:
             panel.toggle.on_change("active", partial(self._toggled, panel))
             if hasattr(panel, "apply_to"):  # a panel that sets parameters (the fit panel's fitted values)
                 panel.apply_to = self.set_values
+            if hasattr(panel, "runner"):  # a panel with work of its own, run in the view's worker thread
+                panel.runner = self.runner
         doc.add_root(self._layout())
         doc.add_root(self.page)
         doc.title = "asperity explore"
@@ -224,6 +226,7 @@ class ExplorerSession:
         """Several parameters at once (a fit's values): the controls show them and the view updates."""
         for key, value in values.items():
             self.controls[key].set(value)
+            self.errors.pop(key, None)  # a typed text the user had left invalid is replaced
         self.pending = self.pending.replace(**values)
         self.link_messages = []
         self.request()

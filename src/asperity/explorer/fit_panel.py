@@ -6,10 +6,10 @@ table (the CSV of ``asperity fit``: a load column and a friction or friction-coe
 column, optional uncertainties; see docs/fitting.md) and a button that fits
 :math:`\\alpha, \\beta, \\gamma` of the Greenwood-Williamson model to it, starting from the
 view's values and keeping the view's other parameters (:math:`\\nu`, :math:`h/b`, the
-Hurtado-Kim constants; Gaussian summit heights, as the dimensionless fit model takes):
+Hurtado-Kim constants, the summit heights):
 
-``asperity.fit.fit_friction_load(data, 'gw', start={alpha, beta, gamma}, fix={nu, h_over_b,
-tau_f1, tau_f2, a1, a2}, vary=('alpha', 'beta', 'gamma'))``.
+``asperity.fit.fit_friction_load(data, GWFit(heights=...), start={alpha, beta, gamma},
+fix={nu, h_over_b, tau_f1, tau_f2, a1, a2}, vary=('alpha', 'beta', 'gamma'))``.
 
 The data, the fitted curve and the view's own curve are drawn together (log axes), the
 fitted values with their standard errors and 95 % intervals listed, the fit's warnings
@@ -26,9 +26,11 @@ import html
 import os
 import re
 import tempfile
+from functools import partial
 
 import numpy as np
 
+from .compute import height_distribution
 from .state import MODES
 
 __all__ = ["FitPanel", "fit_panel", "FIT_VARY", "MAX_UPLOAD_BYTES"]
@@ -61,6 +63,7 @@ class FitPanel:
         self.result = None       # the last FitResult
         self.model = None        # the view's Model (dimensionless mode)
         self.apply_to = None     # set by the app: a function taking {name: value} for the controls
+        self.runner = None       # set by the app: its runner (the worker thread); None: at once
         self.toggle = Checkbox(label="fit: alpha, beta, gamma to measured friction against load "
                                      "(asperity.fit; about a second a fit)", active=False,
                                css_classes=["asp-toggle-fit"])
@@ -110,7 +113,9 @@ class FitPanel:
     def compute(self, result):
         """The view's state and model, and its friction curve at the data's loads (cheap: no fit here)."""
         dimensionless = result.state.mode == MODES[0]
-        curve = result.subject.load_curve(self._loads()) if self.data is not None and dimensionless else None
+        data = self.data  # once: an upload on the page's thread may replace it meanwhile
+        curve = result.subject.load_curve(np.asarray(data.x, dtype=float)) if data is not None and dimensionless \
+            else None
         return result.state, result.subject if dimensionless else None, curve
 
     def show(self, data) -> None:
@@ -168,26 +173,43 @@ class FitPanel:
         self._say(f"{html.escape(name)}: {data.x.size} points read; press <b>Fit</b>.", escape=False)
 
     def run_fit(self):
-        """Fit alpha, beta, gamma from the view's values; show the fitted curve and values."""
+        """Fit alpha, beta, gamma from the view's values; show the fitted curve and values.
+
+        The fit runs through the explorer's runner (its one worker thread, so it never overlaps
+        a view's computation: both record warnings, which is process-wide state) and is shown
+        when it ends; with an immediate runner (tests, scripts) it is done on return, and the
+        :class:`~asperity.fit.FitResult` is returned.
+        """
         if self.data is None or self.state is None or self.state.mode != MODES[0]:
             return None
-        s = self.state
-        if s["heights"] != "gaussian":
-            return self._say("the dimensionless fit takes Gaussian summit heights (Eq 19): set the view's "
-                             "summit heights to gaussian to fit")
+        work = partial(self._fit, self.data, self.state)
+        self.run_button.disabled = True
+        self.info.text = "fitting ..."
+        (self.runner or _immediate)(work, self._fitted)
+        return self.result
+
+    def _fit(self, data, state):
+        """The fit itself (in the worker thread): a FitResult, or the library's message."""
+        from ..fit.gw import GWFit
+
         try:
-            r = self.fit.fit_friction_load(self.data, "gw", start={k: s[k] for k in FIT_VARY},
-                                           fix={k: s[k] for k in _FIXED}, vary=FIT_VARY)
+            model = GWFit(heights=height_distribution(state))  # the view's summit heights
+            return self.fit.fit_friction_load(data, model, start={k: state[k] for k in FIT_VARY},
+                                              fix={k: state[k] for k in _FIXED}, vary=FIT_VARY)
         except ValueError as err:
+            return f"the fit failed: {err}"
+
+    def _fitted(self, outcome) -> None:
+        """Show a fit's outcome (on the page's thread)."""
+        if isinstance(outcome, str):
             self.result = None
-            self._buttons()
-            return self._say(f"the fit failed: {err}")
-        self.result = r
-        c = r.curve
+            self._say(outcome)
+            return
+        self.result = outcome
+        c = outcome.curve
         self.curve.data = {"P": np.asarray(c.P), "F": np.asarray(c.F)}
-        self.info.text = self._report(r)
+        self.info.text = self._report(outcome)
         self._buttons()
-        return r
 
     def use_fitted(self) -> None:
         """Copy the fitted alpha, beta, gamma into the view's controls (the view then updates)."""
@@ -220,7 +242,7 @@ class FitPanel:
         for name in FIT_VARY:
             p = r.parameters[name]
             err = "—" if p.stderr is None or not np.isfinite(p.stderr) else f"{p.stderr:.3g}"
-            lo, hi = p.ci95 if getattr(p, "ci95", None) is not None else (np.nan, np.nan)
+            lo, hi = (np.nan if x is None else float(x) for x in (p.ci95 or (None, None)))
             ci = f"[{lo:.4g}, {hi:.4g}]" if np.isfinite(lo) and np.isfinite(hi) else "—"
             rows.append(f"<tr><td>{name}</td><td>{p.value:.6g}</td><td>± {err}</td><td>{ci}</td></tr>")
         notes = "".join(f"<li>{html.escape(w)}</li>" for w in r.warnings)
@@ -228,6 +250,10 @@ class FitPanel:
                 f"<th>95 % interval</th></tr>{''.join(rows)}</table>"
                 f"<div>χ² = {r.chisqr:.4g} over {r.n_points} points, AIC = {r.aic:.4g}</div>"
                 + (f"<ul>{notes}</ul>" if notes else ""))
+
+
+def _immediate(work, done) -> None:
+    done(work())
 
 
 def fit_panel():

@@ -8,6 +8,7 @@ AIC only charges it 2 per extra parameter.
 
 from __future__ import annotations
 
+from .base import FitModel
 from .engine import parameter_names
 from .models import get_model
 from .read import as_dataset
@@ -34,8 +35,9 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
     ----------
     data : Dataset or path
         The data (one data set).
-    models : sequence of str
-        Model names (default: the single-asperity friction laws and the empirical forms).
+    models : sequence of str or FitModel
+        Model names or models, e.g. ``GWFit(heights=...)`` (default: the single-asperity
+        friction laws and the empirical forms).
     kind : {'friction', 'force', 'pull_off'}, optional
         The data kind when reading a file (default: from its columns).
     vary : sequence of str, optional
@@ -87,9 +89,10 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
     H. Akaike, IEEE Trans. Autom. Control 19 (1974) 716; K. P. Burnham, D. R. Anderson, Model
     Selection and Multimodel Inference, Springer (2002).
     """
-    names = [models] if isinstance(models, str) else models
-    if not isinstance(names, list | tuple) or not all(isinstance(n, str) for n in names):
-        raise TypeError(f"models must be a model name or a list of names, got {type(models).__name__}")
+    names = [models] if isinstance(models, str | FitModel) else models
+    if not isinstance(names, list | tuple) or not all(isinstance(n, str | FitModel) for n in names):
+        raise TypeError(f"models must be a model name or a list of names (or FitModel objects), got "
+                        f"{type(models).__name__}")
     if not names or len({str(m).lower() for m in names}) != len(names):
         raise ValueError(f"models must be a non-empty list of distinct names, got {models!r}")
     data = as_dataset(data, kind, units, drop_nan)

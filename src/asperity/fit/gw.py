@@ -3,7 +3,8 @@ r"""The multi-asperity model as a fit model: dimensionless, or physical through 
 *Dimensionless* data (the paper's units: :math:`P/NGb^2`, :math:`F/NGb^2`, :math:`d/\sigma`)
 are fitted with :class:`asperity.Model` and the parameters ``alpha``, ``beta``, ``gamma``
 (varied by default), ``nu``, ``h_over_b`` and the Hurtado-Kim constants ``tau_f1``,
-``tau_f2``, ``a1``, ``a2`` (fixed at the paper's values unless varied).
+``tau_f2``, ``a1``, ``a2`` (fixed at the paper's values unless varied), with Gaussian
+summit heights or those given (``GWFit(heights=...)``, passed as the ``model``).
 
 *Physical* data (newtons, metres) need a :class:`~asperity.physical.PhysicalContact`, which
 gives the material (:math:`E`, :math:`\nu`, hence :math:`E^*` and :math:`G^*`, fixed) and the
@@ -32,6 +33,7 @@ import numpy as np
 from ..curves import Model
 from ..friction_stress import ConstantShear, HurtadoKim
 from ..groups import maugis_lambda
+from ..heights import GAUSSIAN, check_heights
 from ..physical import PhysicalContact
 from ..surface import Surface
 from ..tabulation import D_MIN
@@ -53,16 +55,31 @@ class GWFit(FitModel):
         Needed for physical data: the material and the start values.
     material : Material or str, optional
         Unused (the contact holds the material); accepted so all models are built alike.
+    heights : HeightDistribution, optional
+        Summit heights of the dimensionless model (default the Gaussian, Eq 19), e.g.
+        ``asperity.heights.Weibull(skew=0.5)``; a physical fit takes the contact's.
+
+    Examples
+    --------
+    >>> from asperity.heights import Weibull
+    >>> GWFit(heights=Weibull(skew=0.5)).heights
+    Weibull(skew=0.5)
     """
 
     name = "gw"
     title = "multi-asperity (Greenwood-Williamson + Hurtado-Kim + Maugis-Dugdale)"
     kinds = ("friction", "force", "pull_off")
 
-    def __init__(self, contact=None, material=None):
+    def __init__(self, contact=None, material=None, heights=None):
         if contact is not None and not isinstance(contact, PhysicalContact):
             raise ValueError(f"contact must be an asperity.physical.PhysicalContact, got {type(contact).__name__}")
+        if heights is not None and contact is not None:
+            raise ValueError("heights: a physical fit takes the contact's summit heights; give them to the "
+                             "PhysicalContact (heights=...) instead")
         self.contact = contact
+        self.heights = GAUSSIAN if heights is None else check_heights(heights)
+        if self.heights is not GAUSSIAN:  # the result names the model it fitted
+            self.name = f"gw (heights {self.heights.spec or repr(self.heights)})"
         self._cache: OrderedDict = OrderedDict()
 
     def check(self, data):
@@ -116,7 +133,7 @@ class GWFit(FitModel):
             return hit
         if self.contact is None:
             model = Model(v["alpha"], v["beta"], v["gamma"], nu=v["nu"], h_over_b=v["h_over_b"],
-                          friction=HurtadoKim(*(v[n] for n in HK_NAMES)))
+                          friction=HurtadoKim(*(v[n] for n in HK_NAMES)), heights=self.heights)
             built = (model, 1.0, 1.0, None)
         else:
             c = self.contact

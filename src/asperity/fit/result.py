@@ -280,8 +280,9 @@ class Comparison:
 
     def summary(self) -> str:
         """A readable ranking."""
-        lines = [f"{'model':<10} {'k':>2} {'chi-square':>12} {'AIC':>12} {'dAIC':>9} {'weight':>7}"]
+        width = max([10, *(len(str(r["model"])) for r in self.rows())])
+        lines = [f"{'model':<{width}} {'k':>2} {'chi-square':>12} {'AIC':>12} {'dAIC':>9} {'weight':>7}"]
         for r in self.rows():
-            lines.append(f"{r['model']:<10} {r['n_free']:>2} {r['chisqr']:>12.5g} {r['aic']:>12.5g} "
+            lines.append(f"{r['model']:<{width}} {r['n_free']:>2} {r['chisqr']:>12.5g} {r['aic']:>12.5g} "
                          f"{r['delta_aic']:>9.3g} {r['akaike_weight']:>7.3f}")
         return "\n".join(lines) + "\n"

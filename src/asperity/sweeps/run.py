@@ -90,30 +90,38 @@ def local_worker_settings():
     """:data:`LOCAL_WORKER_CONFIG` while a local cluster starts its workers.
 
     A nanny takes the variables it sets before spawning a worker from this process's
-    environment first and from Dask's configuration second, and leaves them in the
-    environment; so the trim threshold is set in both here, and the environment restored.
+    environment first and from Dask's configuration second (a ``MALLOC_TRIM_THRESHOLD_``
+    the user set is kept, unless it is Dask's own 65536, left there by an earlier cluster),
+    once, when it is made; whenever it (re)starts a worker it writes
+    them into this process's environment, as Dask does with its own defaults.  The value set
+    here for the making is restored afterwards.
     """
     import dask
 
     key = "MALLOC_TRIM_THRESHOLD_"
     old = os.environ.get(key)
-    os.environ[key] = str(LOCAL_WORKER_CONFIG[f"distributed.nanny.pre-spawn-environ.{key}"])
+    ours = old is None or old == "65536"  # unset, or Dask's default left behind by an earlier cluster
+    if ours:
+        os.environ[key] = str(LOCAL_WORKER_CONFIG[f"distributed.nanny.pre-spawn-environ.{key}"])
     try:
         with dask.config.set(LOCAL_WORKER_CONFIG):
             yield
     finally:
-        if old is None:
-            os.environ.pop(key, None)
-        else:
-            os.environ[key] = old
+        if ours:
+            if old is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = old
 
 
 def _local_cluster():
     distributed = require("distributed", purpose="sweeps on Dask")
     n = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
     with local_worker_settings():
+        # config=: each nanny hands it to every worker it starts, restarts included
         cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                           dashboard_address=":0", silence_logs=logging.ERROR)
+                                           dashboard_address=":0", silence_logs=logging.ERROR,
+                                           config={"distributed.worker.profile.enabled": False})
     return cluster, distributed.Client(cluster)
 
 
