@@ -37,6 +37,15 @@ def upload(panel, path):
     panel.read_upload(base64.b64encode(path.read_bytes()).decode(), path.name)
 
 
+def panel_with(query, path):
+    """A page for ``query`` with the fit panel on and the file at ``path`` uploaded: (session, panel)."""
+    s = ExplorerSession(Document(), query, runner=immediate_runner)
+    panel = fit_of(s)
+    panel.toggle.active = True
+    upload(panel, path)
+    return s, panel
+
+
 def test_the_panel_fits_what_asperity_fit_fits_from_the_view(tmp_path):
     path = friction_csv(tmp_path)
     s = ExplorerSession(Document(), "n=30&alpha=0.02&beta=800&gamma=0.002&nu=0.25", runner=immediate_runner)
@@ -75,12 +84,9 @@ def test_the_panel_fits_what_asperity_fit_fits_from_the_view(tmp_path):
     (b"load [nN],friction [nN]\n1,2\n2,3\n3,4\n4,5\n5,6\n", "physical data"),
 ])
 def test_bad_files_are_messages(tmp_path, content, needle):
-    s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
-    panel = fit_of(s)
-    panel.toggle.active = True
     path = tmp_path / "bad.csv"
     path.write_bytes(content)
-    upload(panel, path)
+    _, panel = panel_with("n=20", path)
     assert needle in panel.info.text and panel.data is None and panel.run_button.disabled
     assert "/tmp" not in panel.info.text and "bad.csv" in panel.info.text  # the user's file, no server paths
 
@@ -90,10 +96,7 @@ def test_the_views_summit_heights_are_fitted_with(tmp_path):
     from asperity.heights import Exponential
 
     path = friction_csv(tmp_path)
-    s = ExplorerSession(Document(), "n=20&heights=exponential&alpha=0.02", runner=immediate_runner)
-    panel = fit_of(s)
-    panel.toggle.active = True
-    upload(panel, path)
+    _, panel = panel_with("n=20&heights=exponential&alpha=0.02", path)
     r = panel.run_fit()
     ref = fit_friction_load(str(path), GWFit(heights=Exponential()), start={"alpha": 0.02, "beta": 1000.0,
                                                                            "gamma": 1e-3}, vary=FIT_VARY)
@@ -103,10 +106,6 @@ def test_the_views_summit_heights_are_fitted_with(tmp_path):
 
 
 def test_physical_mode_does_not_fit(tmp_path):
-    path = friction_csv(tmp_path)
-    s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
-    panel = fit_of(s)
-    panel.toggle.active = True
-    upload(panel, path)
+    s, panel = panel_with("n=20", friction_csv(tmp_path))
     s.on_value("mode", "physical")
     assert panel.run_button.disabled and "dimensionless" in panel.info.text
