@@ -13,6 +13,7 @@ import asperity
 
 #: Modules whose examples must run.
 DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
+                   "asperity.branch_inversion",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity._maugis_dugdale_brackets", "asperity.maugis_dugdale_branch", "asperity.hertz",
                    "asperity.jkr", "asperity.dmt",
@@ -52,8 +53,8 @@ FULL_DOCS = {
     "asperity.fit.api": ["fit_friction_load", "fit_force_separation", "fit_pull_off"],
     "asperity.fit.joint": ["fit_joint"],
     "asperity.fit.compare": ["compare_models"],
-    "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
-                              "invert_branch"],
+    "asperity.load_control": ["start_separation", "bracket_low", "force_grid", "stable_branch"],
+    "asperity.branch_inversion": ["branch_guess", "invert_branch"],
     "asperity.pull_off_search": ["find_pull_off"],
     "asperity.bodies": ["contact_material"],
     "asperity.surface": ["nayak_summit_sigma"],
