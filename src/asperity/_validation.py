@@ -184,6 +184,13 @@ def _as_scalar(value, name: str, unit: str | None) -> float:
     return float(arr)
 
 
+def check_scalar_sign(value, name: str, *, positive: bool) -> float:
+    """A real scalar, > 0 (``positive``) or >= 0, as a float; the errors name ``name``
+    (those of :func:`check_positive` / :func:`check_nonnegative`, then :func:`scalar`)."""
+    check = check_positive if positive else check_nonnegative
+    return float(scalar(check(value, name), name))
+
+
 def check_scalar_positive(value, name: str, unit: str | None = None, *, allow_zero: bool = False) -> float:
     """One finite real number > 0 (>= 0 with ``allow_zero``), converted to ``unit`` if given.
 
