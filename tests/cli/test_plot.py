@@ -194,3 +194,16 @@ def test_output_into_a_missing_directory_is_refused(capsys, tmp_path, sweep_file
     code, _, err = run(capsys, *argv, "-o", str(tmp_path / "missing" / "out.png"))
     assert one_line_error(code, err, "does not exist"), err
     assert not (tmp_path / "missing").exists()
+
+
+def test_heat_map_cells_are_centred_on_log_axes():
+    """Found by a review: on a log axis the cells' edges are geometric midpoints (linear ones
+    put the alpha = 1e-3 cell over 2.5e-4..1.75e-3 and gave gamma = 1e-5 a negative edge)."""
+    import numpy as np
+
+    from asperity.cli.plot import _edges
+
+    edges = _edges(np.array([1e-3, 1e-2, 1e-1]), True)
+    np.testing.assert_allclose(edges, [10 ** -3.5, 10 ** -2.5, 10 ** -1.5, 10 ** -0.5], rtol=1e-12)
+    np.testing.assert_allclose(_edges(np.array([0.0, 1.0, 3.0]), False), [-0.5, 0.5, 2.0, 4.0])
+    assert np.all(_edges(np.geomspace(1e-5, 1e-2, 5), True) > 0)

@@ -109,3 +109,15 @@ def test_physical_mode_does_not_fit(tmp_path):
     s, panel = panel_with("n=20", friction_csv(tmp_path))
     s.on_value("mode", "physical")
     assert panel.run_button.disabled and "dimensionless" in panel.info.text
+
+
+def test_messages_name_the_users_file_escaped(tmp_path):
+    """Found by a review: names with HTML or backslashes were mangled to their last characters."""
+    path = friction_csv(tmp_path)
+    s = ExplorerSession(Document(), "n=20", runner=immediate_runner)
+    panel = fit_of(s)
+    panel.toggle.active = True
+    panel.read_upload(base64.b64encode(path.read_bytes()).decode(), "<b>run 2</b>.csv")
+    assert panel.info.text.startswith("&lt;b&gt;run 2&lt;/b&gt;.csv: 25 points read")
+    panel.read_upload(base64.b64encode(b"P,F\n1,2\n").decode(), r"C:\Users\me\data.csv")
+    assert panel.info.text.startswith(r"C:\Users\me\data.csv: 1 points")

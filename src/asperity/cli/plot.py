@@ -87,11 +87,13 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
     if log_z:  # decades: a log colour scale; zeros (no pull-off, say) and NaN drawn grey
         values = np.where(values > 0, values, np.nan)
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.85")
-    mesh = ax.pcolormesh(ds[x].values, ds[y].values, np.ma.masked_invalid(values), shading="nearest",
-                         norm=LogNorm() if log_z else None, cmap=cmap)
+    logs = {name: bool(_is_log(name, quantity) and np.all(ds[name].values > 0) and ds[name].size > 1)
+            for name in (x, y)}
+    # cell edges halfway between the grid values: geometric midpoints on a log axis
+    mesh = ax.pcolormesh(_edges(ds[x].values, logs[x]), _edges(ds[y].values, logs[y]),
+                         np.ma.masked_invalid(values), shading="flat", norm=LogNorm() if log_z else None, cmap=cmap)
     for name, set_scale, set_label in ((x, ax.set_xscale, ax.set_xlabel), (y, ax.set_yscale, ax.set_ylabel)):
-        coord = ds[name].values
-        if _is_log(name, quantity) and np.all(coord > 0) and coord.size > 1:
+        if logs[name]:
             set_scale("log")
         set_label(_label(ds[name], name))
     bar = fig.colorbar(mesh, ax=ax)
@@ -123,6 +125,20 @@ def _label(da, name) -> str:
         text = name
     unit = da.attrs.get("units")
     return f"{text} [{unit}]" if unit and unit != "1" else text
+
+
+def _edges(values, log: bool):
+    """Cell edges around the grid values (sorted or not): midpoints, geometric on a log axis;
+    the outer edges as far outside as the nearest midpoint is inside."""
+    import numpy as np
+
+    v = np.asarray(values, dtype=float)
+    if v.size == 1:
+        return np.array([v[0] / 2, v[0] * 2]) if log and v[0] > 0 else np.array([v[0] - 0.5, v[0] + 0.5])
+    t = np.log(v) if log else v
+    mid = 0.5 * (t[1:] + t[:-1])
+    edges = np.concatenate([[2 * t[0] - mid[0]], mid, [2 * t[-1] - mid[-1]]])
+    return np.exp(edges) if log else edges
 
 
 def run(args) -> None:

@@ -147,7 +147,8 @@ class FitPanel:
             return self._say(f"{filename}: not a file the browser could send")
         if len(raw) > MAX_UPLOAD_BYTES:
             return self._say(f"{filename}: {len(raw)} bytes, more than {MAX_UPLOAD_BYTES} (a friction-load table)")
-        name = re.sub(r"[^A-Za-z0-9._-]", "_", os.path.basename(filename)).lstrip(".") or "data.csv"
+        # the copy's name keeps the file's extension (read_data reads by it); messages give the user's name
+        name = re.sub(r"[^A-Za-z0-9._-]", "_", re.split(r"[\\/]", filename)[-1]).lstrip(".") or "data.csv"
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, name)  # the user's file name, so that messages name it
             with open(path, "wb") as fh:
@@ -155,12 +156,12 @@ class FitPanel:
             try:
                 data = self.fit.read_data(path, kind="friction")
             except ValueError as err:
-                return self._say(str(err).replace(tmp + os.sep, "").replace(tmp, ""))
+                return self._say(str(err).replace(path, filename).replace(tmp, ""))
         if data.physical:
             return self._say(f"{filename}: loads with units (physical data); the panel fits the dimensionless "
                              "model: give P and F (or mu) in units of N G b^2, or use asperity fit --material")
         if data.x.size <= len(FIT_VARY):
-            return self._say(f"{name}: {data.x.size} points; a fit of {len(FIT_VARY)} parameters needs at least "
+            return self._say(f"{filename}: {data.x.size} points; a fit of {len(FIT_VARY)} parameters needs at least "
                              f"{len(FIT_VARY) + 1}")
         self.data = data
         F, F_err = self._friction(data)
@@ -170,7 +171,7 @@ class FitPanel:
             self._show_view(None if model is None else model.load_curve(self._loads()))
         except ValueError:  # loads beyond the view's domain (more tensile than its pull-off)
             self._show_view(None)
-        self._say(f"{html.escape(name)}: {data.x.size} points read; press <b>Fit</b>.", escape=False)
+        self._say(f"{html.escape(filename)}: {data.x.size} points read; press <b>Fit</b>.", escape=False)
 
     def run_fit(self):
         """Fit alpha, beta, gamma from the view's values; show the fitted curve and values.
@@ -194,8 +195,11 @@ class FitPanel:
 
         try:
             model = GWFit(heights=height_distribution(state))  # the view's summit heights
+            # Wald intervals: profile likelihoods of nearly degenerate parameters (alpha and beta
+            # often correlate at |r| ~ 0.999 in friction-load data) can take minutes, and the page
+            # would wait; the correlation warning is shown with the intervals.
             return self.fit.fit_friction_load(data, model, start={k: state[k] for k in FIT_VARY},
-                                              fix={k: state[k] for k in _FIXED}, vary=FIT_VARY)
+                                              fix={k: state[k] for k in _FIXED}, vary=FIT_VARY, ci="wald")
         except ValueError as err:
             return f"the fit failed: {err}"
 
