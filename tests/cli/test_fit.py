@@ -53,6 +53,10 @@ def same(cli_text, result):
     (["--model", "cos", "--weights", "none", "--ci", "wald"], {"model": "cos", "weights": "none", "ci": "wald"}),
     (["--model", "cos", "--restarts", "always", "--ci", "wald"], {"model": "cos", "restarts": "always", "ci": "wald"}),
     (["--model", "amontons", "--restarts", "never"], {"model": "amontons", "restarts": "never"}),
+    (["--model", "cos", "--ci", "profile", "--profile-budget", "1e-9"],
+     {"model": "cos", "ci": "profile", "profile_budget": 1e-9}),
+    (["--model", "amontons", "--ci", "profile", "--profile-budget", "inf"],
+     {"model": "amontons", "ci": "profile", "profile_budget": math.inf}),
     (["--model", "amontons", "--loss", "huber", "--weights", "relative"],
      {"model": "amontons", "loss": "huber", "weights": "relative"}),
     (["--model", "gw", "--vary", "gamma", "--fix", "alpha=0.01,beta=100", "--ci", "wald"],
@@ -170,6 +174,11 @@ CASES = {
     "bad bound": ("P,F\n1,2\n2,3\n3,4\n", ["--bounds", "P0=1"], "--bounds: expected P0=LO:HI"),
     "unknown parameter": ("P,F\n1,2\n2,3\n3,4\n", ["--vary", "zeta"], "unknown parameter 'zeta'"),
     "empty file": ("", [], "no header line"),
+    "material ignored": ("P,F\n1,2\n2,3\n3,4\n", ["--material", "Au"],
+                         "material: model 'amontons' takes no material"),
+    "zero budget": ("P,F\n1,2\n2,3\n3,4\n", ["--profile-budget", "0"], "expected seconds > 0 or inf, got '0'"),
+    "nan budget": ("P,F\n1,2\n2,3\n3,4\n", ["--profile-budget", "nan"], "expected seconds > 0 or inf"),
+    "word budget": ("P,F\n1,2\n2,3\n3,4\n", ["--profile-budget", "soon"], "expected seconds > 0 or inf"),
     "model and compare": ("P,F\n1,2\n2,3\n3,4\n", ["--compare", "cos"], "give --model or --compare, not both"),
 }
 
@@ -201,8 +210,12 @@ def test_help_and_startup(capsys):
     assert exc.value.code == 0
     out = " ".join(capsys.readouterr().out.split())
     for word in ("--model", "--vary", "--fix", "--bounds", "--compare", "--weights", "--loss", "--format", "--plot",
-                 "--drop-nan", "--load-unit", "friction [nN]", "w_J_m2", "--material", "--shared"):
+                 "--drop-nan", "--load-unit", "friction [nN]", "w_J_m2", "--material", "--shared",
+                 "--profile-budget"):
         assert word in out, word
+    from asperity.fit.uncertainty import PROFILE_BUDGET
+
+    assert f"(default {PROFILE_BUDGET:g}; inf: no limit)" in out  # the help's default is the library's
     probe = textwrap.dedent("""
         import sys
         from asperity.cli import main

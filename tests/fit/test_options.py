@@ -5,6 +5,7 @@ import math
 import numpy as np
 import pytest
 
+from asperity import jkr
 from asperity.fit import (
     compare_models,
     fit_force_separation,
@@ -14,6 +15,7 @@ from asperity.fit import (
     friction_load_data,
     get_model,
 )
+from asperity.materials import material
 
 P = np.linspace(0.5, 5.0, 10)
 LINE = friction_load_data(P, 0.3 * (P + 1.0))
@@ -114,8 +116,44 @@ def test_compare_options_and_refusals():
     assert amontons.parameters["P0"].vary is False
     with pytest.raises(ValueError, match="fix: unknown parameter 'w_J_m2'"):
         compare_models(LINE, ["amontons", "cos"], fix={"w_J_m2": 1.0})
-    with pytest.raises(ValueError, match="distinct names"):
+    with pytest.raises(ValueError, match="^models must be a non-empty list of distinct models, got 'cos' more than "
+                                         "once$"):
         compare_models(LINE, ["cos", "COS"])
+    from asperity.fit.gw import GWFit
+    from asperity.heights import parse_heights
+
+    gw = GWFit(heights=parse_heights("weibull:skew=0.5"))
+    with pytest.raises(ValueError, match=r"^models .* got 'gw \(heights weibull:skew=0\.5\)' more than once$"):
+        compare_models(LINE, [gw, gw])   # named by the model's name, not its repr
+    with pytest.raises(ValueError, match="got 'gw' more than once"):
+        compare_models(LINE, ["gw", GWFit()])
+
+
+@pytest.mark.parametrize("model", ["amontons", "cos", "gw", "GW"])
+def test_a_material_for_a_model_without_one_is_refused(model):
+    """material= is refused, never ignored, by the models that take none (found by a review:
+    `asperity fit --material` on dimensionless data was silently ignored)."""
+    from asperity.fit.gw import GWFit
+
+    with pytest.raises(ValueError, match=f"^material: model '{model.lower()}' takes no material; only the single-"):
+        fit_friction_load(LINE, model, material="Au")
+    with pytest.raises(ValueError, match="^material: model 'gw' takes no material"):
+        fit_friction_load(LINE, GWFit(), material="Au")
+    with pytest.raises(ValueError, match="^material: models 'cos', 'amontons' take no material"):
+        compare_models(LINE, ["cos", "amontons"], material="Si")
+
+
+def test_compare_passes_the_material_to_the_laws_only():
+    """In a comparison of laws and empirical forms the material goes to the laws; the
+    empirical forms are fitted as without it."""
+    P = np.linspace(1e-9, 5e-8, 20)
+    F = 1e9 * np.pi * jkr.jkr_contact_radius(P, R=20e-9, w=0.2, E_star=material("Si").E_star) ** 2
+    data = friction_load_data(P, F, physical=True)
+    table = compare_models(data, ["jkr", "cos"], material="Si", fix={"R_m": 20e-9}, ci="wald")
+    got = {r.model: r for r in table.results}
+    alone = fit_friction_load(data, "cos", ci="wald")
+    assert got["cos"].values == alone.values
+    assert got["jkr"].values["E_star_Pa"] == material("Si").E_star
     with pytest.raises(ValueError, match="unknown model"):
         compare_models(LINE, ["cos", "nope"])
 

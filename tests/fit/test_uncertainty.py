@@ -133,6 +133,41 @@ def test_flat_profile_has_no_limit():
     assert any("w_J_m2: no lower 95 % limit" in w for w in res.warnings)
 
 
+def _correlated_fit_data():
+    rng = np.random.default_rng(11)
+    P = loads(30)
+    return friction_load_data(P, TAU * jkr_g(P) * (1 + 0.03 * rng.standard_normal(P.size)), physical=True)
+
+
+def test_a_profile_over_its_budget_keeps_the_wald_interval_and_says_so():
+    """profile_budget: a profile stopped by the budget leaves exactly the Wald interval, with a
+    note and a warning naming the budget; no limit gives the profile of the default."""
+    data = _correlated_fit_data()
+    kw = {"fix": {"E_star_Pa": E_STAR}, "start": {"R_m": R, "w_J_m2": 0.1, "tau_Pa": 1e9}, "vary": ["w_J_m2", "tau_Pa"]}
+    wald = fit_friction_load(data, "jkr", ci="wald", **kw)
+    stopped = fit_friction_load(data, "jkr", ci="profile", profile_budget=1e-9, **kw)
+    full = fit_friction_load(data, "jkr", ci="profile", **kw)
+    unlimited = fit_friction_load(data, "jkr", ci="profile", profile_budget=math.inf, **kw)
+    for name in ("w_J_m2", "tau_Pa"):
+        s, w = stopped.parameters[name], wald.parameters[name]
+        assert s.method == "wald" and s.ci95 == w.ci95 and s.value == w.value
+        assert "profile over budget" in s.note
+        assert any(m.startswith(f"{name}: the profile likelihood did not finish within profile_budget = 1e-09 s")
+                   and "ci='profile'" in m for m in stopped.warnings)
+        assert full.parameters[name].method == "profile" and full.parameters[name].ci95 != w.ci95
+        assert unlimited.parameters[name].ci95 == full.parameters[name].ci95
+    assert not any("profile_budget" in m for m in full.warnings)
+
+
+@pytest.mark.parametrize("bad, error", [(0.0, ValueError), (-1.0, ValueError), (math.nan, ValueError),
+                                        (-math.inf, ValueError), ("1 minute", ValueError), (True, ValueError),
+                                        ([1.0], ValueError)])
+def test_bad_profile_budget_is_refused_by_name(bad, error):
+    data = _correlated_fit_data()
+    with pytest.raises(error, match="profile_budget"):
+        fit_friction_load(data, "cos", profile_budget=bad)
+
+
 def test_robust_loss_resists_an_outlier():
     P = np.linspace(1.0, 10.0, 30)
     F = 0.3 * (P + 1.0) * (1 + 0.01 * np.random.default_rng(8).standard_normal(30))

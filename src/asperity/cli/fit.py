@@ -76,6 +76,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     f.add_argument("--ci", choices=("auto", "wald", "profile"), default="auto",
                    help="95%% intervals: profile likelihood where the covariance is unreliable (auto), always, "
                         "or never (wald)")
+    f.add_argument("--profile-budget", metavar="SECONDS", type=_budget,
+                   help="seconds the profile likelihoods may take in all (default 60; inf: no limit); "
+                        "a profile not finished keeps its Wald interval, with a warning")
     f.add_argument("--restarts", choices=("auto", "always", "never"), default="auto",
                    help="repeat the fit from starts a decade away when it looks stuck in a local minimum "
                         "(auto: points out of the model's reach, not converged, or an improbable chi-square), "
@@ -93,6 +96,24 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     o.add_argument("-o", "--output", metavar="FILE", type=output_file, help="write to FILE instead of standard "
                                                                            "output")
     o.add_argument("--plot", metavar="FILE.png", type=output_file, help="also draw data, fit and residuals")
+
+
+def _budget(text):
+    """--profile-budget: seconds > 0 or inf (an argparse type: a bad value is a one-line usage error)."""
+    import argparse
+
+    from ..fit.runner import check_budget
+
+    try:
+        return check_budget(float(text))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected seconds > 0 or inf, got {text!r}") from None
+
+
+def _profile_budget(args):
+    from ..fit.uncertainty import PROFILE_BUDGET
+
+    return PROFILE_BUDGET if args.profile_budget is None else args.profile_budget
 
 
 def _names(text, option):
@@ -163,7 +184,7 @@ def _options(args):
         (start if vary is not None and "R_m" in vary else fix).setdefault("R_m", R)
     return {"vary": vary, "fix": fix, "start": start, "bounds": _bounds(args.bounds), "contact": contact,
             "material": material, "weights": args.weights, "loss": args.loss, "ci": args.ci,
-            "restarts": args.restarts}
+            "restarts": args.restarts, "profile_budget": _profile_budget(args)}
 
 
 def _with_heights(names, args, contact):
@@ -181,6 +202,7 @@ def _with_heights(names, args, contact):
 
 def run(args) -> None:
     from ..fit import compare_models, fit_force_separation, fit_friction_load, fit_joint, fit_pull_off, read_data
+    from ..fit.models import MODELS, model_class
     from ._output import comment_header, format_json, write_outputs
 
     units = {k: v for k, v in (("load", args.load_unit), ("friction", args.friction_unit),
@@ -190,6 +212,11 @@ def run(args) -> None:
     if args.compare is not None and args.model is not None:
         raise UsageError("give --model or --compare, not both")
     datasets = [read_data(path, kind=args.kind, units=units, drop_nan=args.drop_nan) for path in args.data]
+    if contact is not None:  # the contact holds the material; the laws in a comparison take it too
+        names = _names(args.compare, "--compare") if args.compare is not None else [args.model or "gw"]
+        if not any(isinstance(n, str) and n.strip().lower() in MODELS and model_class(n.strip().lower()).uses_material
+                   for n in names):
+            opts["material"] = None
     if args.compare is not None:
         if len(datasets) > 1:
             raise UsageError("--compare fits one DATA file")

@@ -45,13 +45,14 @@ from .models import get_model
 from .read import as_dataset
 from .result import FitResult
 from .runner import fit_problem
+from .uncertainty import PROFILE_BUDGET
 
 __all__ = ["fit_friction_load", "fit_force_separation", "fit_pull_off"]
 
 
 def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, bounds=None, expr=None, contact=None,
                       material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-                      grid=200, restarts="auto") -> FitResult:
+                      grid=200, restarts="auto", profile_budget=PROFILE_BUDGET) -> FitResult:
     r"""Fit a model to friction force (or coefficient) against normal load.
 
     .. math::
@@ -89,6 +90,9 @@ def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, boun
     restarts : {'auto', 'always', 'never'}
         Repeat a fit that looks stuck in a local minimum from starts a decade away
         (:func:`asperity.fit.runner.run`).
+    profile_budget : float
+        Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
+        limit); a profile not finished keeps its Wald interval, with a warning.
 
     Returns
     -------
@@ -118,12 +122,13 @@ def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, boun
     """
     data = as_dataset(data, "friction", units, drop_nan)
     return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
-                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts)
+                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts,
+                profile_budget=profile_budget)
 
 
 def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, bounds=None, expr=None, contact=None,
                          material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-                         grid=200, restarts="auto") -> FitResult:
+                         grid=200, restarts="auto", profile_budget=PROFILE_BUDGET) -> FitResult:
     r"""Fit a model to normal force against separation.
 
     .. math::
@@ -161,6 +166,9 @@ def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, b
     restarts : {'auto', 'always', 'never'}
         Repeat a fit that looks stuck in a local minimum from starts a decade away
         (:func:`asperity.fit.runner.run`).
+    profile_budget : float
+        Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
+        limit); a profile not finished keeps its Wald interval, with a warning.
 
     Returns
     -------
@@ -188,12 +196,13 @@ def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, b
     """
     data = as_dataset(data, "force", units, drop_nan)
     return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
-                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts)
+                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts,
+                profile_budget=profile_budget)
 
 
 def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=None, expr=None, contact=None,
                  material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-                 restarts="auto") -> FitResult:
+                 restarts="auto", profile_budget=PROFILE_BUDGET) -> FitResult:
     r"""Fit a model to pull-off forces, one per surface or condition.
 
     .. math::
@@ -228,6 +237,9 @@ def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=No
     restarts : {'auto', 'always', 'never'}
         Repeat a fit that looks stuck in a local minimum from starts a decade away
         (:func:`asperity.fit.runner.run`).
+    profile_budget : float
+        Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
+        limit); a profile not finished keeps its Wald interval, with a warning.
 
     Returns
     -------
@@ -254,4 +266,5 @@ def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=No
     """
     data = as_dataset(data, "pull_off", units, drop_nan)
     return fit_problem([data], [get_model(model, material=material, contact=contact)], vary=vary, fix=fix, start=start,
-                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, restarts=restarts)
+                bounds=bounds, expr=expr, weights=weights, loss=loss, ci=ci, restarts=restarts,
+                profile_budget=profile_budget)

@@ -110,11 +110,15 @@ class FitModel:
         Data kinds it predicts (``friction``, ``force``, ``pull_off``).
     physical : bool or None
         True: SI data only; False: dimensionless data only; None: either.
+    uses_material : bool
+        Whether ``material=`` means anything to it (the single-asperity laws' :math:`E^*` and
+        starts); :func:`~asperity.fit.models.get_model` refuses a material for the others.
     """
 
     name = ""
     kinds: tuple[str, ...] = ()
     physical: bool | None = None
+    uses_material = False
     title = ""
 
     def check(self, data: Dataset) -> None:

@@ -10,17 +10,18 @@ from __future__ import annotations
 
 from .base import FitModel
 from .engine import parameter_names
-from .models import get_model
+from .models import MODELS, get_model, material_refusal, model_class
 from .read import as_dataset
 from .result import Comparison
 from .runner import fit_problem
+from .uncertainty import PROFILE_BUDGET
 
 __all__ = ["compare_models"]
 
 
 def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind=None, vary=None, fix=None,
                    start=None, bounds=None, contact=None, material=None, weights="auto", loss="linear", ci="auto",
-                   units=None, drop_nan=False, grid=200, restarts="auto") -> Comparison:
+                   units=None, drop_nan=False, grid=200, restarts="auto", profile_budget=PROFILE_BUDGET) -> Comparison:
     r"""Fit several models to the same data and rank them by AIC.
 
     .. math::
@@ -63,6 +64,9 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
     restarts : {'auto', 'always', 'never'}
         Repeat a fit that looks stuck in a local minimum from starts a decade away
         (:func:`asperity.fit.runner.run`).
+    profile_budget : float
+        Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
+        limit); a profile not finished keeps its Wald interval, with a warning.
 
     Returns
     -------
@@ -93,10 +97,18 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
     if not isinstance(names, list | tuple) or not all(isinstance(n, str | FitModel) for n in names):
         raise TypeError(f"models must be a model name or a list of names (or FitModel objects), got "
                         f"{type(models).__name__}")
-    if not names or len({str(m).lower() for m in names}) != len(names):
-        raise ValueError(f"models must be a non-empty list of distinct names, got {models!r}")
+    labels = [m.name if isinstance(m, FitModel) else str(m).strip().lower() for m in names]
+    if not names or len(set(labels)) != len(labels):
+        twice = sorted({x for x in labels if labels.count(x) > 1})
+        raise ValueError("models must be a non-empty list of distinct models, got " +
+                         (f"{', '.join(map(repr, twice))} more than once" if twice else "none"))
+    takes = [m.uses_material if isinstance(m, FitModel) else
+             (m.strip().lower() in MODELS and model_class(m.strip().lower()).uses_material) for m in names]
+    if material is not None and not any(takes):
+        raise ValueError(material_refusal(*labels))
     data = as_dataset(data, kind, units, drop_nan)
-    built = [get_model(m, material=material, contact=contact) for m in names]
+    built = [get_model(m, material=material if own else None, contact=contact) for m, own in zip(names, takes,
+                                                                                                  strict=True)]
     for m in built:
         m.check(data)
     vary = None if vary is None else parameter_names(vary, "vary")
@@ -117,7 +129,7 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
         if not mine["vary"]:
             mine["vary"] = None
         results.append(fit_problem([data], [m], weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts,
-                                   **mine))
+                                   profile_budget=profile_budget, **mine))
     ranked = sorted(results, key=lambda r: (not r.success, r.aic if r.aic == r.aic else float("inf")))
     return Comparison(tuple(ranked))
 

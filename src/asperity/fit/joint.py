@@ -11,13 +11,14 @@ from .models import get_model
 from .read import as_dataset
 from .result import FitResult
 from .runner import fit_problem
+from .uncertainty import PROFILE_BUDGET
 
 __all__ = ["fit_joint"]
 
 
 def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
               contact=None, material=None, weights="auto", loss="linear", ci="auto", units=None, drop_nan=False,
-              grid=200, restarts="auto") -> FitResult:
+              grid=200, restarts="auto", profile_budget=PROFILE_BUDGET) -> FitResult:
     r"""Fit several data sets at once, sharing named parameters.
 
     .. math::
@@ -56,6 +57,9 @@ def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=
     restarts : {'auto', 'always', 'never'}
         Repeat a fit that looks stuck in a local minimum from starts a decade away
         (:func:`asperity.fit.runner.run`).
+    profile_budget : float
+        Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
+        limit); a profile not finished keeps its Wald interval, with a warning.
 
     Returns
     -------
@@ -96,4 +100,5 @@ def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=
         raise ValueError(f"models: give one model (and contact) for all {n} data sets or one per data set")
     built = [get_model(m, material=material, contact=c) for m, c in zip(models, contacts, strict=True)]
     return fit_problem(datasets, built, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds, expr=expr,
-                weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts)
+                weights=weights, loss=loss, ci=ci, grid=grid, restarts=restarts,
+                profile_budget=profile_budget)

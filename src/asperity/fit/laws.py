@@ -45,6 +45,7 @@ class _Law(FitModel):
     physical = True
     adhesive = True
     has_sigma0 = False
+    uses_material = True
 
     def __init__(self, material=None):
         self.material = None if material is None else as_material(material)

@@ -50,6 +50,19 @@ MODELS = {"gw": None, "hertz": HertzFit, "jkr": JKRFit, "dmt": DMTFit, "md": MDF
           "amontons": AmontonsFit}
 
 
+def model_class(key: str) -> type:
+    """The :class:`FitModel` subclass registered as ``key`` (a lower-case name of :data:`MODELS`)."""
+    return _gw() if key == "gw" else MODELS[key]
+
+
+def material_refusal(*names: str) -> str:
+    """The message refusing ``material=`` for the models ``names``, which take none."""
+    which = f"model {names[0]!r} takes" if len(names) == 1 else f"models {', '.join(map(repr, names))} take"
+    return (f"material: {which} no material; only the single-asperity laws (hertz, jkr, dmt, md) "
+            "do (their E_star_Pa and starts); the physical gw model takes its material from its contact "
+            "(contact=PhysicalContact(...); --material with --sigma-s, --R, --eta, --area or --surface)")
+
+
 def get_model(name, *, material=None, contact=None) -> FitModel:
     """The :class:`FitModel` called ``name`` (a name of :data:`MODELS`, case-insensitive).
 
@@ -66,13 +79,18 @@ def get_model(name, *, material=None, contact=None) -> FitModel:
     Raises
     ------
     ValueError
-        For an unknown name (the message lists the valid ones).
+        For an unknown name (the message lists the valid ones), or a material for a model
+        that takes none (``gw``, ``cos``, ``amontons``): refused, never ignored.
     """
     if isinstance(name, FitModel):
+        if material is not None and not name.uses_material:
+            raise ValueError(material_refusal(name.name))
         return name
     key = str(name).strip().lower()
     if key not in MODELS:
         raise ValueError(f"unknown model {name!r}; valid: {', '.join(MODELS)}")
+    if material is not None and not model_class(key).uses_material:
+        raise ValueError(material_refusal(key))
     if key == "gw":
         return _gw()(contact=contact, material=material)
     return MODELS[key](material=material)

@@ -16,11 +16,12 @@ import numpy as np
 from scipy import stats
 
 from .._optional import require
-from .._validation import check_integer
+from .._validation import check_integer, check_scalar_positive
 from .._warnings import AsperityWarning
 from .engine import LOSSES, WEIGHTS, Problem, build_problem
 from .result import FitResult, ParameterEstimate
 from .uncertainty import (
+    PROFILE_BUDGET,
     central_jacobian,
     correlated_pairs,
     null_directions,
@@ -58,7 +59,8 @@ class _Counted:
         return self.fn(params)
 
 
-def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = "auto") -> FitResult:
+def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = "auto",
+        profile_budget: float = PROFILE_BUDGET) -> FitResult:
     """Fit ``problem`` and analyse the result (see the module docstring).
 
     ``restarts`` (``'auto'``, ``'always'``, ``'never'``): the local minimiser can stop in a
@@ -66,7 +68,8 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = 
     where data points fall below the model's pull-off load).  With ``'auto'`` a fit that
     looks wrong (:func:`suspicious`) is repeated from the starts of
     :func:`restart_points` and the lowest chi-square kept; ``'always'`` does so for every
-    fit.  A restart that wins is reported among the warnings.
+    fit.  A restart that wins is reported among the warnings.  ``profile_budget``: seconds the
+    profile likelihoods may take (:func:`~asperity.fit.uncertainty.profile_intervals`).
     """
     if ci not in CI_METHODS:
         raise ValueError(f"ci must be one of {', '.join(CI_METHODS)}, got {ci!r}")
@@ -102,7 +105,7 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = 
             result = minimizer.least_squares(params=result.params, loss=problem.loss,
                                              f_scale=1.4826 * mad or 1.0, **kws)
         nfev = objective.calls
-        analysis = _analyse(problem, minimizer, result, absolute, ci)
+        analysis = _analyse(problem, minimizer, result, absolute, ci, profile_budget)
     if restart_note:
         analysis["warnings"].insert(0, restart_note)
     objective_profile = objective.calls - nfev
@@ -163,7 +166,8 @@ def restart_points(params):
 
 
 def fit_problem(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
-                weights="auto", loss="linear", ci="auto", grid=200, restarts="auto") -> FitResult:
+                weights="auto", loss="linear", ci="auto", grid=200, restarts="auto",
+                profile_budget=PROFILE_BUDGET) -> FitResult:
     """Build the problem of ``datasets`` and ``models`` (:func:`~asperity.fit.engine.build_problem`); fit it.
 
     The options are checked here, before any work: a ValueError or TypeError names the option.
@@ -173,12 +177,24 @@ def fit_problem(datasets, models, *, shared=None, vary=None, fix=None, start=Non
         if not isinstance(value, str) or value not in choices:
             raise ValueError(f"{option} must be one of {', '.join(choices)}, got {value!r:.60}")
     grid = check_integer(grid, "grid", 2, MAX_GRID)
+    profile_budget = check_budget(profile_budget)
     problem = build_problem(datasets, models, shared=shared, vary=vary, fix=fix, start=start, bounds=bounds,
                             expr=expr, weights=weights, loss=loss)
-    return run(problem, ci=ci, grid=grid, restarts=restarts)
+    return run(problem, ci=ci, grid=grid, restarts=restarts, profile_budget=profile_budget)
 
 
-def _analyse(problem, minimizer, result, absolute, ci):
+def check_budget(profile_budget) -> float:
+    """``profile_budget`` as a float of seconds > 0 (``math.inf``: no limit), or a named error."""
+    if isinstance(profile_budget, float | np.floating) and profile_budget == math.inf:
+        return math.inf
+    try:
+        return check_scalar_positive(profile_budget, "profile_budget")
+    except ValueError:
+        raise ValueError(f"profile_budget must be a number of seconds > 0, or math.inf for no limit (valid range "
+                         f"0 < profile_budget <= inf), got {profile_budget!r:.60}") from None
+
+
+def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
     """Standard errors, intervals, correlations and warnings of the free parameters."""
     var_names = list(result.var_names)
     by_fitted = {p.fitted_name: p for p in problem.params.values()}
@@ -250,10 +266,17 @@ def _analyse(problem, minimizer, result, absolute, ci):
     if want_profile:
         for i, v in enumerate(var_names):
             result.params[v].stderr = float(se[i]) if np.isfinite(se[i]) and se[i] > 0 else None
-        profiles = profile_intervals(minimizer, result, want_profile, absolute=absolute, bounds=bounds)
+        profiles = profile_intervals(minimizer, result, want_profile, absolute=absolute, bounds=bounds, budget=budget)
         for v, (lo, hi, why_lo, why_hi) in profiles.items():
             p = by_fitted[v]
             n = p.name
+            if why_lo == "budget":
+                why = "asked for with ci='profile'" if ci == "profile" else "the quadratic check of it failed"
+                warnings.append(f"{n}: the profile likelihood did not finish within profile_budget = {budget:g} s; "
+                                f"its Wald interval is shown, approximate ({why}): raise the budget, or fix a "
+                                "correlated parameter")
+                notes[n] = (notes.get(n, "") + "; profile over budget, Wald interval approximate").lstrip("; ")
+                continue
             intervals[n] = tuple(None if z is None else (10.0**z if p.log else z) for z in (lo, hi))
             methods[n] = "profile"
             for end, why, side in ((lo, why_lo, "lower"), (hi, why_hi, "upper")):

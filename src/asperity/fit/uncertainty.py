@@ -31,11 +31,18 @@ the amount the quadratic approximation predicts (:math:`q^2 s^2`) to within
 :data:`WALD_TOLERANCE` (a factor 1.5 either way), and both points must lie within the
 bounds.  The profile's level is :math:`\Delta\chi^2 = \chi^2_{1,0.95} = 3.84` with stated
 uncertainties, and lmfit's F-test otherwise.
+
+The profiles of nearly degenerate parameters (a pair correlated at :math:`|r| \approx 0.999`)
+can wander decades away, where one model evaluation costs far more than at the best fit:
+they run under a budget of seconds (``profile_budget``, default :data:`PROFILE_BUDGET`),
+checked before each evaluation.  A parameter whose profile did not finish keeps its Wald
+interval, with a warning that it is approximate.
 """
 
 from __future__ import annotations
 
 import math
+import time
 import warnings
 
 import numpy as np
@@ -43,7 +50,7 @@ from scipy import stats
 
 __all__ = ["RANK_TOL", "JACOBIAN_STEP", "CORRELATION_LIMIT", "WALD_TOLERANCE", "PROFILE_STEPS", "central_jacobian",
            "null_directions", "pseudo_covariance", "correlated_pairs", "wald_interval", "wald_reliable",
-           "profile_intervals", "chi2_probability"]
+           "PROFILE_BUDGET", "profile_intervals", "chi2_probability"]
 
 #: Relative singular value below which the Jacobian counts as singular (of the central-difference
 #: Jacobian of :func:`central_jacobian`, accurate to about 1e-8).
@@ -56,6 +63,9 @@ CORRELATION_LIMIT = 0.95
 #: Steps of one standard error (fitted coordinates) the profile takes outward before it calls a
 #: side flat (lmfit's ``maxiter``).
 PROFILE_STEPS = 20
+#: Seconds all the profile likelihoods of one fit may take (checked before each evaluation, so
+#: the overrun is at most one evaluation); ``math.inf`` for no limit.
+PROFILE_BUDGET = 60.0
 #: How far (as a factor) the chi-square rise at the ends of a Wald interval may differ from the
 #: quadratic prediction before the profile likelihood replaces it.
 WALD_TOLERANCE = 1.5
@@ -245,7 +255,11 @@ def chi2_probability(best, new) -> float:
     return float(stats.chi2.cdf(max(new.chisqr - best.chisqr, 0.0), df=1))
 
 
-def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict):
+class _OverBudget(Exception):
+    """Raised inside a profile's objective when the profile budget is spent."""
+
+
+def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict, budget: float = PROFILE_BUDGET):
     """95 % profile-likelihood intervals of ``names`` (fitted coordinates) with lmfit's conf_interval.
 
     Parameters
@@ -260,17 +274,40 @@ def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict)
         Stated uncertainties (:math:`\\Delta\\chi^2` level) rather than the F-test.
     bounds : dict
         Fitted name -> (lo, hi) bounds, to tell a flat profile at a bound.
+    budget : float
+        Seconds the profiles may take in all (``math.inf``: no limit).
 
     Returns
     -------
     dict
         name -> ``(lo, hi, why_lo, why_hi)`` in fitted coordinates; a side the profile could
-        not close is ``None`` with the reason (``'bound'``, ``'flat'``).
+        not close is ``None`` with the reason (``'bound'``, ``'flat'``, or ``'budget'`` for
+        a profile stopped when the budget was spent: both sides of that parameter).
     """
+    deadline = time.monotonic() + budget
+    objective = minimizer.userfcn
+
+    def guarded(params, *args, **kws):
+        if time.monotonic() > deadline:
+            raise _OverBudget
+        return objective(params, *args, **kws)
+
+    minimizer.userfcn = guarded
+    try:
+        return _profiles(minimizer, result, names, absolute, bounds)
+    finally:
+        minimizer.userfcn = objective
+
+
+def _profiles(minimizer, result, names, absolute, bounds):
+    """The profiles of :func:`profile_intervals` (the objective raises _OverBudget when the time is up)."""
     lmfit = _lmfit()
     free = [n for n, p in result.params.items() if p.vary]
     if len(free) == 1:
-        return {names[0]: _profile_one(minimizer, result, names[0], absolute, bounds)}
+        try:
+            return {names[0]: _profile_one(minimizer, result, names[0], absolute, bounds)}
+        except _OverBudget:
+            return {names[0]: (None, None, "budget", "budget")}
     prob = chi2_probability if absolute else None
     out = {}
     for name in names:
@@ -281,6 +318,9 @@ def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict)
                                          maxiter=PROFILE_STEPS)
             except lmfit.minimizer.MinimizerException:
                 out[name] = (None, None, "flat", "flat")
+                continue
+            except _OverBudget:
+                out[name] = (None, None, "budget", "budget")
                 continue
         rows = ci[name]
         centre = next(i for i, (prob, _) in enumerate(rows) if prob == 0.0)
