@@ -353,6 +353,7 @@ SKIP = {
                     "asperity.explorer.fit_panel.FitPanel", "asperity.explorer.fit_panel.fit_panel",
                     "asperity.explorer.compute.compute", "asperity.explorer.compute.height_distribution",
                     "asperity.explorer.compute.friction_law", "asperity.explorer.compute.loads",
+                    "asperity.explorer.compute.asperity_law", "asperity.explorer.state.used",
                     "asperity.explorer.compute.separations", "asperity.explorer.compute.build_subject",
                     "asperity.explorer.compute.load_columns", "asperity.explorer.compute.separation_columns",
                     "asperity.explorer.compute.pull_off_columns", "asperity.explorer.state.fields",

@@ -210,3 +210,30 @@ def test_unexpected_errors_are_messages_too(monkeypatch):
     monkeypatch.setattr(compute_module, "compute", broken)
     s.controls["beta"].text.value = "300"
     assert "unexpected error (IndexError: boom)" in s.page.messages_html
+
+
+def test_law_plasticity_and_interaction_controls():
+    """The law's parameters appear with the Jackson-Green law; the physical controls reach the
+    contact; the material menu fills the hardness; the URL holds them."""
+    s = session("gamma=0")
+    assert not s.controls["H_over_E"].layout.visible
+    s.controls["law"].widget.value = "jackson-green"
+    assert s.controls["H_over_E"].layout.visible and s.controls["h_star_over_sigma"].layout.visible
+    assert "law=jackson-green" in s.page.query and "H_over_E=" in s.page.query
+    from asperity.elastic_plastic import JacksonGreen
+
+    v = query_state(s)
+    model = asperity.Model(v["alpha"], v["beta"], 0.0, law=JacksonGreen(v["H_over_E"], v["h_star_over_sigma"]))
+    np.testing.assert_array_equal(s.plots.load.data["area"],
+                                  model.load_curve(np.geomspace(v["P_min"], v["P_max"], v["n"])).area)
+    s.controls["law"].widget.value = "elastic"
+    assert not s.controls["H_over_E"].layout.visible and "H_over_E" not in s.page.query
+    s.mode.active = 1
+    s.controls["adhesion"].widget.active = False
+    s.controls["plasticity"].widget.value = "jackson-green"
+    s.controls["interaction"].widget.value = "cgp2008"
+    assert s.failure is None and s.result.subject.law == "jackson-green"
+    assert s.result.subject.interaction.name == "cgp2008"
+    assert "plasticity index ψ" in s.page.derived_html
+    s.controls["material"].widget.value = "Si"
+    assert s.controls["H_Pa"].text.value == number_text(material("Si").H)

@@ -139,6 +139,31 @@ def test_link_sets_the_view(page, server):
     assert " N at d = " in page.locator(".asp-derived table").inner_text()
 
 
+def test_elastic_plastic_link_and_law_menu(page, server):
+    """A link with the Jackson-Green law draws the library's curves with that law; choosing the
+    elastic law in the page hides the law's parameters and drops them from the address."""
+    import asperity
+    from asperity.elastic_plastic import JacksonGreen
+
+    load(page, server.url + "?gamma=0&law=jackson-green&H_over_E=0.005&h_star_over_sigma=2&n=40")
+    assert page.locator(".asp-input-law select").input_value() == "jackson-green"
+    assert page.locator(".asp-input-H_over_E input").is_visible()
+    p = params(page)
+    model = asperity.Model(float(p["alpha"]), float(p["beta"]), 0.0, nu=float(p["nu"]),
+                           h_over_b=float(p["h_over_b"]),
+                           friction=asperity.HurtadoKim(float(p["tau_f1"]), float(p["tau_f2"]), float(p["a1"]),
+                                                        float(p["a2"])),
+                           law=JacksonGreen(float(p["H_over_E"]), float(p["h_star_over_sigma"])))
+    n = int(p["n"])
+    assert_plotted(page, model.load_curve(np.geomspace(float(p["P_min"]), float(p["P_max"]), n)),
+                   model.separation_curve(np.linspace(float(p["d_min"]), float(p["d_max"]), n)))
+    page.locator(".asp-input-law select").select_option("elastic")
+    wait_changes(page, 1)
+    page.wait_for_function("() => window.location.search.includes('law=elastic')")
+    assert "H_over_E" not in params(page) and not page.locator(".asp-input-H_over_E input").is_visible()
+    assert_plotted(page, *library_curves(params(page))[:2])
+
+
 def test_invalid_value_shows_the_message_and_keeps_the_view(page, server):
     load(page, server.url)
     url, before = page.url, source_data(page, "load")

@@ -176,3 +176,46 @@ def test_registry_distribution_reaches_the_model(monkeypatch):
     assert dist == Scaled(width=2.5)
     assert compute(s).subject.heights == Scaled(width=2.5)
     assert math.isclose(compute(s).load.P[0], compute(s.replace(heights="gaussian")).load.P[0])
+
+
+def test_the_elastic_plastic_law_reaches_the_model():
+    """law = jackson-green with H/E*, h*/sigma: the curves are Model(..., law=JacksonGreen(...))'s,
+    and differ from the elastic ones (the law is not ignored)."""
+    from asperity.elastic_plastic import JacksonGreen
+
+    s = _view(alpha=0.05, beta=1000.0, gamma=0.0, law="jackson-green", H_over_E=0.004, h_star_over_sigma=3.0,
+              P_min=1.0, P_max=1e4, n=30)
+    r = compute(s)
+    model = asperity.Model(0.05, 1000.0, 0.0, law=JacksonGreen(0.004, 3.0))
+    assert r.load.to_csv() == model.load_curve(np.geomspace(1.0, 1e4, 30)).to_csv()
+    assert r.separation.to_csv() == model.separation_curve(np.linspace(-1.0, 5.0, 30)).to_csv()
+    elastic = compute(s.replace(law="elastic"))
+    assert not np.allclose(elastic.load.area, r.load.area, rtol=1e-3)
+    with pytest.raises(ValueError, match="H_over_E"):
+        compute(s.replace(H_over_E=0.5))   # the library's range, named
+
+
+def test_plasticity_size_effect_and_interaction_reach_the_contact():
+    surface = Surface(2e-9, 1e-6, 1e12, 1e-6)
+    base = {"mode": "physical", "material": "Au", "adhesion": False, "P_min_N": 1e-3, "P_max_N": 1.0, "n": 25}
+    P = np.geomspace(1e-3, 1.0, 25)
+    for changes, kwargs in (({"plasticity": "jackson-green"}, {"plasticity": "jackson-green"}),
+                            ({"interaction": "cgp2008"}, {"interaction": "cgp2008"})):
+        r = compute(_view(**base, **changes))
+        contact = PhysicalContact("Au", surface, adhesion=False, **kwargs)
+        assert r.load.to_csv() == contact.load_curve(P).to_csv(), changes
+        assert r.separation.to_csv() == contact.separation_curve(np.linspace(-1.0, 5.0, 25) * 2e-9).to_csv()
+    # a custom material carries its hardness (H, and H0 with the size effect) and h*
+    custom = {**base, "material": CUSTOM, "E_Pa": 78e9, "material_nu": 0.44, "b_m": 2.885e-10, "w_J_m2": 3.0,
+              "H_Pa": 1e9, "h_star_m": 5e-7, "plasticity": "jackson-green", "size_effect": True}
+    r = compute(_view(**custom))
+    mat = Material(CUSTOM, E=78e9, nu=0.44, b=2.885e-10, w=3.0, H=1e9, H0=1e9, h_star=5e-7)
+    contact = PhysicalContact(mat, surface, adhesion=False, plasticity="jackson-green", size_effect=True)
+    assert r.load.to_csv() == contact.load_curve(P).to_csv()
+    row = dict((name, value) for name, value, _ in r.derived)["plasticity index ψ"]
+    assert row == f"{contact.plasticity_index:.4g}"
+    # the library refuses what it does not support: the size effect without Au's H0, h*; cgp2008 with adhesion
+    with pytest.raises(ValueError, match="H0 and h_star"):
+        compute(_view(**{**base, "plasticity": "jackson-green", "size_effect": True}))
+    with pytest.raises(ValueError, match="non-adhesive"):
+        compute(_view(**{**base, "adhesion": True, "interaction": "cgp2008"}))

@@ -121,3 +121,11 @@ def test_messages_name_the_users_file_escaped(tmp_path):
     assert panel.info.text.startswith("&lt;b&gt;run 2&lt;/b&gt;.csv: 25 points read")
     panel.read_upload(base64.b64encode(b"P,F\n1,2\n").decode(), r"C:\Users\me\data.csv")
     assert panel.info.text.startswith(r"C:\Users\me\data.csv: 1 points")
+
+
+def test_a_plastic_view_is_not_fitted_with_the_elastic_model(tmp_path):
+    """The dimensionless fit has no plastic law: a view with the Jackson-Green law says so
+    instead of fitting an elastic model that is not the one shown."""
+    _, panel = panel_with("n=20&gamma=0&law=jackson-green&H_over_E=0.01", friction_csv(tmp_path))
+    assert panel.run_fit() is None and panel.result is None
+    assert "fits the elastic model" in panel.info.text and "jackson-green" in panel.info.text

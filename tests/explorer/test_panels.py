@@ -23,9 +23,10 @@ def fake_cycle_module(calls, fail=None):
     """A stand-in asperity.cycle with the real module's call and result shape."""
     module = types.ModuleType("asperity.cycle")
 
-    def cycle(alpha, beta, gamma=0.0, *, preload=None, n=200, nu=0.3, h_over_b=1.0, friction=None, heights=None):
+    def cycle(alpha, beta, gamma=0.0, *, preload=None, n=200, nu=0.3, h_over_b=1.0, friction=None, heights=None,
+              law=None):
         calls.append({"alpha": alpha, "beta": beta, "gamma": gamma, "preload": preload, "n": n, "nu": nu,
-                      "h_over_b": h_over_b, "friction": friction, "heights": heights})
+                      "h_over_b": h_over_b, "friction": friction, "heights": heights, "law": law})
         if fail:
             raise ValueError(fail)
         d = np.linspace(0.0, 2.0, 5)
@@ -70,6 +71,7 @@ def test_cycle_panel_is_off_until_asked_then_plots_each_branch(with_cycle):
     call = calls[0]
     assert (call["alpha"], call["nu"], call["n"], call["preload"]) == (0.004, 0.25, 20, s.result.load.P.max())
     assert call["friction"] == asperity.HurtadoKim() and isinstance(call["heights"], asperity.heights.Gaussian)
+    assert call["law"] is None  # the elastic law
     np.testing.assert_array_equal(panel.sources["retract"].data["P"], -np.linspace(0, 2, 5))
     assert list(panel.marker.data["P"]) == [-1.5]
     s.controls["beta"].text.value = "300"  # every update now computes the cycle too
@@ -98,3 +100,12 @@ def test_real_cycle_panel():
     assert s.failure is None, s.failure
     ref = cycle(0.003, 1000.0, 1e-3, preload=1e5, n=30)
     np.testing.assert_allclose(cycle_of(s).sources["retract"].data["P"], ref.retract.P, rtol=1e-12)
+    # with the Jackson-Green law (no adhesion) the cycle is the library's with that law
+    from asperity.elastic_plastic import JacksonGreen
+
+    s = ExplorerSession(Document(), "n=30&gamma=0&law=jackson-green&H_over_E=0.003&h_star_over_sigma=2",
+                        runner=immediate_runner)
+    cycle_of(s).toggle.active = True
+    assert s.failure is None, s.failure
+    ref = cycle(0.003, 1000.0, 0.0, preload=1e5, n=30, law=JacksonGreen(0.003, 2.0))
+    np.testing.assert_allclose(cycle_of(s).sources["approach"].data["P"], ref.approach.P, rtol=1e-12)

@@ -111,11 +111,18 @@ def test_every_field_and_the_mode_are_in_the_query():
     s = default_state().replace(material=CUSTOM, mode="physical")
     keys = [pair.split("=")[0] for pair in s.to_query().split("&")]
     # a distribution's parameters only with it chosen
-    assert keys == [k for k, f in fields().items() if f.group in (None, s["heights"])]
+    assert keys == [k for k, f in fields().items() if f.group in (None, s["heights"]) and f.when is None]
     chosen = s.replace(heights="johnson")
     keys = [pair.split("=")[0] for pair in chosen.to_query().split("&")]
-    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson")]
+    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson") and f.when is None]
     assert "johnson_kurt" in keys and "weibull_skew" not in keys
+    # the elastic-plastic law's parameters only with that law
+    assert "H_over_E" not in keys and "h_star_over_sigma" not in keys and "law=elastic" in chosen.to_query()
+    plastic = chosen.replace(law="jackson-green", H_over_E=0.02)
+    keys = [pair.split("=")[0] for pair in plastic.to_query().split("&")]
+    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson")]
+    back, messages = state_from_query(plastic.to_query())
+    assert messages == [] and back == plastic
 
 
 def test_tornado_arguments_are_read():

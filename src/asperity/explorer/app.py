@@ -32,16 +32,16 @@ from . import compute as _compute
 from .controls import make_control
 from .panels import optional_panels
 from .plots import Plots
-from .state import CUSTOM, MATERIAL_KEYS, MODES, default_state, fields, state_from_query
+from .state import CUSTOM, MATERIAL_KEYS, MODES, default_state, fields, state_from_query, used
 
 __all__ = ["ExplorerSession", "PageState", "make_document", "attempt", "immediate_runner", "threaded_runner",
            "GROUPS"]
 
 #: Sections of the control column: (heading, field keys); keys of the other mode are hidden.
 GROUPS = (
-    ("Model parameters", ("alpha", "beta", "gamma", "nu", "h_over_b")),
-    ("Physical contact", ("material", "E_Pa", "material_nu", "b_m", "w_J_m2", "adhesion",
-                          "sigma_s_m", "R_m", "eta_per_m2", "area_m2")),
+    ("Model parameters", ("alpha", "beta", "gamma", "nu", "h_over_b", "law", "H_over_E", "h_star_over_sigma")),
+    ("Physical contact", ("material", "E_Pa", "material_nu", "b_m", "w_J_m2", "H_Pa", "h_star_m", "adhesion",
+                          "plasticity", "size_effect", "interaction", "sigma_s_m", "R_m", "eta_per_m2", "area_m2")),
     ("Loads and separations", ("P_min", "P_max", "P_min_N", "P_max_N", "d_min", "d_max", "n")),
     ("Hurtado-Kim friction (τ in units of G*, radii in units of b)", ("tau_f1", "tau_f2", "a1", "a2")),
     ("Summit heights", ("heights",)),
@@ -49,7 +49,7 @@ GROUPS = (
 CONTROL_WIDTH = 330
 #: Heights (px) of the messages (scrolling beyond two) and of the derived numbers in each mode.
 MESSAGES_HEIGHT = 62
-DERIVED_HEIGHT = {"dimensionless": 112, "physical": 176}
+DERIVED_HEIGHT = {"dimensionless": 112, "physical": 198}
 
 
 class PageState(DataModel):
@@ -197,7 +197,7 @@ class ExplorerSession:
         self.derived.height = DERIVED_HEIGHT[state.mode]
         for key, control in self.controls.items():
             f = self.fields[key]
-            visible = f.mode in (None, state.mode) and (f.group is None or f.group == state["heights"])
+            visible = f.mode in (None, state.mode) and used(f, state.values)
             control.layout.visible = visible
         self.sections["Model parameters"].visible = state.mode == MODES[0]
         self.sections["Physical contact"].visible = state.mode == MODES[1]
@@ -217,7 +217,7 @@ class ExplorerSession:
         if key == "material" and value != CUSTOM:
             changes.update(self._material_values(value))
         self.pending = self.pending.replace(**changes)
-        if key in ("mode", "heights"):
+        if key in ("mode", "heights") or any(f.when and f.when[0] == key for f in self.fields.values()):
             self._show_mode(self.pending)
         self.link_messages = []
         self.request()
@@ -232,14 +232,14 @@ class ExplorerSession:
         self.request()
 
     def _material_values(self, name: str) -> dict:
-        """The table material's E, nu, b, w shown in (and carried by) the custom fields."""
+        """The table material's E, nu, b, w, H, h* shown in (and carried by) the custom fields."""
         from ..materials import material
 
         try:
             m = material(name)
         except ValueError:  # the library will say so when computing
             return {}
-        values = {"E_Pa": m.E, "material_nu": m.nu, "b_m": m.b, "w_J_m2": m.w}
+        values = {"E_Pa": m.E, "material_nu": m.nu, "b_m": m.b, "w_J_m2": m.w, "H_Pa": m.H, "h_star_m": m.h_star}
         values = {k: v for k, v in values.items() if v is not None}
         for k, v in values.items():
             self.controls[k].set(v)

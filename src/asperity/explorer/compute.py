@@ -37,10 +37,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .state import CUSTOM, MODES, State, distributions
+from .state import CUSTOM, ELASTIC, MODES, State, distributions
 
-__all__ = ["Result", "compute", "height_distribution", "friction_law", "loads", "separations", "build_subject",
-           "load_columns", "separation_columns", "pull_off_columns"]
+__all__ = ["Result", "compute", "height_distribution", "friction_law", "asperity_law", "loads", "separations",
+           "build_subject", "load_columns", "separation_columns", "pull_off_columns"]
 
 
 @dataclass(frozen=True)
@@ -114,7 +114,18 @@ def _material(state: State):
 
     if state["material"] != CUSTOM:
         return material(state["material"])
-    return Material(CUSTOM, E=state["E_Pa"], nu=state["material_nu"], b=state["b_m"], w=state["w_J_m2"])
+    return Material(CUSTOM, E=state["E_Pa"], nu=state["material_nu"], b=state["b_m"], w=state["w_J_m2"],
+                    H=state["H_Pa"], H0=state["H_Pa"], h_star=state["h_star_m"])
+
+
+def asperity_law(state: State):
+    """The per-asperity law of a dimensionless view: None (elastic) or
+    :class:`asperity.elastic_plastic.JacksonGreen` of its ``H_over_E``, ``h_star_over_sigma``."""
+    if state["law"] == ELASTIC:
+        return None
+    from ..elastic_plastic import LAWS
+
+    return LAWS[state["law"]](H_over_E=state["H_over_E"], h_star_over_sigma=state["h_star_over_sigma"])
 
 
 def build_subject(state: State):
@@ -124,13 +135,14 @@ def build_subject(state: State):
         from .. import Model
 
         return Model(state["alpha"], state["beta"], state["gamma"], nu=state["nu"], h_over_b=state["h_over_b"],
-                     friction=friction, heights=heights)
+                     friction=friction, heights=heights, law=asperity_law(state))
     from ..physical import PhysicalContact
     from ..surface import Surface
 
     surface = Surface(sigma_s=state["sigma_s_m"], R=state["R_m"], eta=state["eta_per_m2"], area=state["area_m2"])
     return PhysicalContact(_material(state), surface, friction=friction, adhesion=state["adhesion"],
-                           heights=heights)
+                           heights=heights, plasticity=state["plasticity"], size_effect=state["size_effect"],
+                           interaction=state["interaction"])
 
 
 def _fmt(x: float) -> str:
@@ -169,6 +181,9 @@ def _derived(state: State, subject, pull_off) -> list[tuple[str, str, str]]:
     rows += _adhesion_numbers(c.lam, c.surface.R, c.w, c.E_star, c.h, c.surface.sigma_s)
     where = f" at d = {pull_off.d:.4g} m" if pull_off.exists else ""
     rows.insert(5, ("pull-off force", f"{_fmt(pull_off.force)} N{where}", "most tensile force"))
+    if c.hardness is not None:
+        rows.append(("plasticity index ψ", _fmt(c.plasticity_index),
+                     f"(E*/H)(σs/R)^1/2 with H = {_fmt(c.hardness)} Pa: plastic asperities above about 1"))
     return rows
 
 

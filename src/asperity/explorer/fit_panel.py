@@ -31,7 +31,7 @@ from functools import partial
 import numpy as np
 
 from .compute import height_distribution
-from .state import MODES
+from .state import ELASTIC, MODES
 
 __all__ = ["FitPanel", "fit_panel", "FIT_VARY", "MAX_UPLOAD_BYTES"]
 
@@ -193,6 +193,9 @@ class FitPanel:
         """The fit itself (in the worker thread): a FitResult, or the library's message."""
         from ..fit.gw import GWFit
 
+        if state["law"] != ELASTIC:
+            return (f"the fit panel fits the elastic model (the dimensionless fit has no plastic law); the view's "
+                    f"asperity law is {state['law']}: set it to {ELASTIC} to fit")
         try:
             model = GWFit(heights=height_distribution(state))  # the view's summit heights
             # Wald intervals: profile likelihoods of nearly degenerate parameters (alpha and beta

@@ -26,7 +26,7 @@ import importlib.util
 
 import numpy as np
 
-from .compute import friction_law, height_distribution
+from .compute import asperity_law, friction_law, height_distribution
 from .state import MODES
 
 __all__ = ["OPTIONAL_PANELS", "optional_panels", "cycle_panel", "CyclePanel"]
@@ -46,7 +46,7 @@ class CyclePanel:
 
     The cycle goes to the view's largest load (``preload``) and back, with the view's
     parameters: ``asperity.cycle.cycle(alpha, beta, gamma, preload=..., n=..., nu=...,
-    h_over_b=..., friction=..., heights=...)`` in dimensionless mode,
+    h_over_b=..., friction=..., heights=..., law=...)`` in dimensionless mode,
     ``PhysicalContact.cycle(preload=..., n=...)`` in physical mode.  The pull-off force on
     retraction is marked.
     """
@@ -94,7 +94,8 @@ class CyclePanel:
         if s.mode == MODES[1]:
             return result.subject.cycle(preload=preload, n=s["n"])
         return self.cycle.cycle(s["alpha"], s["beta"], s["gamma"], preload=preload, n=s["n"], nu=s["nu"],
-                                h_over_b=s["h_over_b"], friction=friction_law(s), heights=height_distribution(s))
+                                h_over_b=s["h_over_b"], friction=friction_law(s), heights=height_distribution(s),
+                                law=asperity_law(s))
 
     def show(self, cycle) -> None:
         """Plot both branches and the pull-off on retraction."""

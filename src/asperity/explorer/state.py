@@ -29,7 +29,7 @@ from urllib.parse import parse_qs, urlencode
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS, Quantity
 
 __all__ = ["MODES", "START", "MAX_POINTS", "Field", "State", "fields", "distributions", "parse_value", "number_text",
-           "state_from_query", "default_state", "CUSTOM"]
+           "state_from_query", "default_state", "used", "CUSTOM", "ELASTIC"]
 
 MODES = ("dimensionless", "physical")
 #: Choice of the material menu meaning "the moduli, b and w typed below".
@@ -44,7 +44,10 @@ START = {
     "alpha": 0.003, "beta": 1000.0, "gamma": 1e-3,
     "P_min": 1e-2, "P_max": 1e5, "d_min": -1.0, "d_max": 5.0, "n": 200,
     "material": "Au", "sigma_s": 2e-9, "R": 1e-6, "eta": 1e12, "area": 1e-6, "P_min_N": 1e-4, "P_max_N": 10.0,
+    "H_over_E": 0.01, "h_star": 1e-6,
 }
+#: The per-asperity law a view starts with (a name of ``asperity.elastic_plastic.LAWS``).
+ELASTIC = "elastic"
 
 
 @dataclass(frozen=True)
@@ -55,7 +58,8 @@ class Field:
     ``flag``; ``quantity`` the registry entry (meaning, ranges, log scale) where there is
     one; ``unit`` the SI unit a typed value may carry (pint syntax, ``''`` for none);
     ``mode`` the mode that uses it (None: both); ``choices`` for a menu; ``group`` the
-    distribution whose parameter it is, if any.
+    distribution whose parameter it is, if any; ``when`` a ``(key, value)`` pair: the field
+    is used (shown, written to the query string) only while field ``key`` has that value.
     """
 
     key: str
@@ -68,6 +72,7 @@ class Field:
     choices: tuple[str, ...] = ()
     group: str | None = None
     help: str = ""
+    when: tuple[str, str] | None = None
 
     def text(self, value) -> str:
         """``value`` as written in a query string (numbers in the shortest form that reads back exactly)."""
@@ -143,6 +148,8 @@ def _registry_field(key: str, q: Quantity, default, *, mode=None, unit="", label
 
 def fields() -> dict[str, Field]:
     """Every field of the view, by query key, in the order of the page (built on each call)."""
+    from ..elastic_plastic import LAWS
+    from ..interaction import INTERACTIONS
     from ..materials import material, material_names
 
     M, S, C = MODEL_PARAMETERS, PHYSICAL_PARAMETERS, CURVE_COLUMNS
@@ -151,6 +158,15 @@ def fields() -> dict[str, Field]:
     out = [Field("mode", "choice", MODES[0], choices=MODES, help="dimensionless groups or a physical contact")]
     out += [_registry_field(k, M[k], START[k] if M[k].default in (None, 0.0) else M[k].default, mode=MODES[0])
             for k in ("alpha", "beta", "gamma", "nu", "h_over_b")]
+    laws = tuple(LAWS)
+    jg = ("law", laws[1])
+    out += [Field("law", "choice", ELASTIC, mode=MODES[0], choices=laws, label="asperity law",
+                  help="per-asperity law: elastic (Hertz or Maugis-Dugdale) or Jackson-Green elastic-plastic "
+                       "(no adhesion: gamma = 0)"),
+            dataclasses.replace(_registry_field("H_over_E", M["H_over_E"], START["H_over_E"], mode=MODES[0]),
+                                when=jg),
+            dataclasses.replace(_registry_field("h_star_over_sigma", M["h_star_over_sigma"],
+                                                M["h_star_over_sigma"].default, mode=MODES[0]), when=jg)]
     out += [_registry_field(k, M[k], M[k].default) for k in ("tau_f1", "tau_f2", "a1", "a2")]
     out.append(Field("heights", "choice", next(iter(menu)), choices=tuple(menu),
                      help="distribution of summit heights (in units of sigma)"))
@@ -167,8 +183,18 @@ def fields() -> dict[str, Field]:
             _registry_field("material_nu", M["nu"], au.nu, mode=MODES[1], label="ν"),
             _registry_field("b_m", S["b"], au.b, mode=MODES[1], unit="m", label="b"),
             _registry_field("w_J_m2", S["w"], au.w, mode=MODES[1], unit="J/m^2", label="w"),
+            _registry_field("H_Pa", S["hardness"], au.H, mode=MODES[1], unit="Pa", label="H"),
+            _registry_field("h_star_m", S["h_star"], START["h_star"], mode=MODES[1], unit="m", label="h*"),
             Field("adhesion", "flag", True, mode=MODES[1],
-                  help="Maugis-Dugdale, with the material's w (off: Hertz)")]
+                  help="Maugis-Dugdale, with the material's w (off: Hertz)"),
+            Field("plasticity", "choice", ELASTIC, mode=MODES[1], choices=laws, label="asperity law",
+                  help="per-asperity law: elastic, or Jackson-Green elastic-plastic with the material's "
+                       "hardness H (no adhesion)"),
+            Field("size_effect", "flag", False, mode=MODES[1], label="size effect",
+                  help="Nix-Gao size effect: H = H0 (1 + h*/omega)^1/2, with the material's H0 and h*"),
+            Field("interaction", "choice", next(iter(INTERACTIONS)), mode=MODES[1], choices=tuple(INTERACTIONS),
+                  help="asperity interaction: none, or the mean field of Ciavarella, Greenwood & Paggi 2008 "
+                       "(no adhesion)")]
     out += [_registry_field(S[k].si_name, S[k], START[k], mode=MODES[1], unit=S[k].si_unit)
             for k in ("sigma_s", "R", "eta", "area")]
     out += [_registry_field("P_min_N", C["P"], START["P_min_N"], mode=MODES[1], unit="N", label="P min"),
@@ -176,8 +202,9 @@ def fields() -> dict[str, Field]:
     return {f.key: f for f in out}
 
 
-#: Fields written to the query string only with the custom material.
-MATERIAL_KEYS = ("E_Pa", "material_nu", "b_m", "w_J_m2")
+#: Fields written to the query string only with the custom material (H_Pa is its hardness, and
+#: H0 with the size effect; h_star_m its Nix-Gao length).
+MATERIAL_KEYS = ("E_Pa", "material_nu", "b_m", "w_J_m2", "H_Pa", "h_star_m")
 
 
 @dataclass(frozen=True)
@@ -208,7 +235,7 @@ class State:
         for key, f in spec.items():
             if key not in self.values or (key in MATERIAL_KEYS and self.values["material"] != CUSTOM):
                 continue
-            if f.group is not None and f.group != self.values["heights"]:
+            if not used(f, self.values):
                 continue
             out.append(key)
         return out
@@ -217,6 +244,14 @@ class State:
         """The query string (without ``?``) of this view; :func:`state_from_query` reads it back."""
         spec = fields() if spec is None else spec
         return urlencode([(k, spec[k].text(self.values[k])) for k in self.shown(spec)], safe=":/")
+
+
+def used(f: Field, values: Mapping[str, object]) -> bool:
+    """Whether field ``f`` counts in a view of ``values``: its distribution is the chosen one and
+    its ``when`` condition holds (the mode is not considered)."""
+    if f.group is not None and f.group != values.get("heights"):
+        return False
+    return f.when is None or values.get(f.when[0]) == f.when[1]
 
 
 def default_state() -> State:
