@@ -179,6 +179,11 @@ CASES = {
     "zero budget": ("P,F\n1,2\n2,3\n3,4\n", ["--profile-budget", "0"], "expected seconds > 0 or inf, got '0'"),
     "nan budget": ("P,F\n1,2\n2,3\n3,4\n", ["--profile-budget", "nan"], "expected seconds > 0 or inf"),
     "word budget": ("P,F\n1,2\n2,3\n3,4\n", ["--profile-budget", "soon"], "expected seconds > 0 or inf"),
+    "budget without profiles": ("P,F\n1,2\n2,3\n3,4\n", ["--ci", "wald", "--profile-budget", "5"],
+                                "--profile-budget limits the profile likelihoods, which --ci wald never computes"),
+    "contact ignored": ("P,F\n1,2\n2,3\n3,4\n", ["--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2", "--area",
+                                                  "1mm^2", "--material", "Si"],
+                        "contact: model 'amontons' takes no contact"),
     "model and compare": ("P,F\n1,2\n2,3\n3,4\n", ["--compare", "cos"], "give --model or --compare, not both"),
 }
 
@@ -215,7 +220,7 @@ def test_help_and_startup(capsys):
         assert word in out, word
     from asperity.fit.uncertainty import PROFILE_BUDGET
 
-    assert f"(default {PROFILE_BUDGET:g}; inf: no limit)" in out  # the help's default is the library's
+    assert f"(default {PROFILE_BUDGET:g}; inf: no limit;" in out  # the help's default is the library's
     probe = textwrap.dedent("""
         import sys
         from asperity.cli import main
@@ -229,12 +234,16 @@ def test_help_and_startup(capsys):
     assert res.stdout.strip().splitlines()[-1] == "[]"
 
 
-@pytest.mark.parametrize("extra", [["--law", "jackson-green"], ["--hardness", "1GPa"], ["--size-effect"],
-                                   ["--heights", "weibull:skew=0.5", "--law", "elastic"]])
-def test_contact_options_without_a_contact_are_refused(capsys, line, extra):
-    """The law and height options of a physical contact are refused without one, never ignored."""
+@pytest.mark.parametrize("extra, needle", [
+    (["--law", "jackson-green"], "applies to the rough-surface model gw"),
+    (["--hardness", "1GPa"], "applies to the rough-surface model gw"),
+    (["--size-effect"], "only to the rough-surface model with a physical contact"),
+    (["--plastic-threshold", "0.1"], "only to the rough-surface model with a physical contact"),
+    (["--heights", "weibull:skew=0.5", "--law", "elastic"], "apply to the rough-surface model gw")])
+def test_contact_options_without_a_contact_are_refused(capsys, line, extra, needle):
+    """The law and height options are refused by the single-asperity laws, never ignored."""
     code, out, err = run(capsys, "fit", str(line), "--model", "amontons", *extra)
-    assert out == "" and one_line_error(code, err, "only to the rough-surface model with a physical contact")
+    assert out == "" and one_line_error(code, err, needle)
     assert all(option in err for option in extra if option.startswith("--"))  # each one named
 
 
@@ -266,3 +275,30 @@ def test_heights_of_the_dimensionless_gw_fit(capsys, tmp_path):
     assert out == "" and one_line_error(code, err, "--heights applies to the rough-surface model gw")
     code, out, err = run(capsys, "fit", str(path), "--heights", "exponential", "--compare", "gw,amontons")
     assert code == 0 and "gw (heights exponential)" in out, err
+
+
+def test_jackson_green_law_of_the_dimensionless_gw_fit(capsys, tmp_path):
+    """--law jackson-green --hardness H/E* [--h-star h*/sigma] on dimensionless data fits
+    GWFit(law=JacksonGreen(...)) exactly as the API; the other contact options stay refused."""
+    from asperity.elastic_plastic import JacksonGreen
+    from asperity.fit.gw import GWFit
+
+    P = np.geomspace(1.0, 1e4, 20)
+    F = asperity.Model(0.05, 1000.0, law=JacksonGreen(0.004)).load_curve(P).F
+    F = F * (1 + 0.02 * np.random.default_rng(2).standard_normal(P.size))
+    path = write(tmp_path / "jg.csv", "P,F", zip(P, F, strict=True))
+    argv = ["fit", str(path), "--law", "jackson-green", "--hardness", "0.006", "--h-star", "0.5",
+            "--vary", "alpha,beta,H_over_E", "--ci", "wald", "--format", "json"]
+    code, out, err = run(capsys, *argv)
+    assert code == 0, err
+    same(out, fit.fit_friction_load(str(path), GWFit(law=JacksonGreen(0.006, 0.5)),
+                                    vary=["alpha", "beta", "H_over_E"], ci="wald"))
+    assert strict_json(out)["model"] == "gw (jackson-green)"
+    for extra, needle in ((["--law", "jackson-green"], "give --hardness H/E*"),
+                          (["--law", "jackson-green", "--hardness", "0.01", "--size-effect"],
+                           "--size-effect applies only to the rough-surface model with a physical contact"),
+                          (["--model", "cos", "--law", "jackson-green", "--hardness", "0.01"],
+                           "apply to the rough-surface model gw"),
+                          (["--law", "jackson-green", "--hardness", "hard"], "--hardness: expected a number")):
+        code, out, err = run(capsys, "fit", str(path), *extra)
+        assert out == "" and one_line_error(code, err, needle), (extra, err)

@@ -112,7 +112,8 @@ def valid_values(tmp: str) -> dict[str, list[str]]:
         # summit heights (every model and physical command), fit restarts, surface summits
         "heights": ["gaussian", "weibull:skew=0.5", "exponential", f"empirical:{f['summits']}",
                     f"best:{f['summits']}"],
-        "restarts": ["auto", "never"], "summits": [os.path.join(tmp, "summits_out.txt")],
+        "restarts": ["auto", "never"], "profile_budget": ["5", "inf", "1e-9"],
+        "summits": [os.path.join(tmp, "summits_out.txt")],
         # explore (served and stopped at once: _no_serving)
         "port": ["0"], "host": ["127.0.0.1"], "no_browser": [None],
     }

@@ -237,3 +237,40 @@ def test_law_plasticity_and_interaction_controls():
     assert "plasticity index ψ" in s.page.derived_html
     s.controls["material"].widget.value = "Si"
     assert s.controls["H_Pa"].text.value == number_text(material("Si").H)
+
+
+@pytest.mark.parametrize("query", ["mode=physical&plasticity=jackson-green", "mode=physical&interaction=cgp2008",
+                                   "mode=physical&adhesion=0&size_effect=1"])
+def test_a_rejected_physical_link_says_so(query):
+    """Found by a review: the mode reset of the fallback cleared the note (physical links only)."""
+    s = session(query)
+    assert "the link&#x27;s parameters were rejected" in s.page.messages_html or \
+        "the link's parameters were rejected" in s.page.messages_html
+    assert s.failure is None and query_state(s).mode == "dimensionless"
+
+
+def test_a_linked_table_material_shows_its_own_values():
+    """Found by a review: a link naming Cu showed gold's E, nu, b, w, H in the custom fields, and
+    editing one of them switched to a custom material with gold's other values."""
+    cu = material("Cu")
+    s = session("mode=physical&material=Cu&adhesion=0&plasticity=jackson-green&size_effect=1")
+    assert s.failure is None, s.failure
+    assert s.controls["E_Pa"].text.value == number_text(cu.E) and s.controls["w_J_m2"].text.value == number_text(cu.w)
+    before = s.result.load.F.copy()
+    psi = s.result.subject.plasticity_index
+    s.controls["E_Pa"].text.value = f"{cu.E / 1e9:.17g} GPa"  # the same E, typed: now a custom copy of Cu
+    assert s.controls["material"].widget.value == CUSTOM and s.failure is None, s.failure
+    np.testing.assert_allclose(s.result.load.F, before, rtol=1e-12)
+    assert s.result.subject.plasticity_index == pytest.approx(psi, rel=1e-12)
+
+
+def test_the_jackson_green_law_has_no_gamma():
+    """Choosing the elastic-plastic law hides gamma (it has no adhesion) instead of failing on it;
+    the derived numbers say which law has no adhesion, and give the plasticity index."""
+    s = session("gamma=0.001&alpha=0.02")
+    s.controls["law"].widget.value = "jackson-green"
+    assert s.failure is None and not s.controls["gamma"].layout.visible and "gamma=" not in s.page.query
+    assert "no adhesion: Jackson-Green" in s.page.derived_html
+    assert f"<td>{0.02 / query_state(s)['H_over_E']:.4g}</td>" in s.page.derived_html   # psi = alpha/(H/E*)
+    s.controls["law"].widget.value = "elastic"
+    assert s.controls["gamma"].layout.visible and "gamma=0.001" in s.page.query

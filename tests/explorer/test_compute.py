@@ -207,9 +207,9 @@ def test_plasticity_size_effect_and_interaction_reach_the_contact():
         assert r.separation.to_csv() == contact.separation_curve(np.linspace(-1.0, 5.0, 25) * 2e-9).to_csv()
     # a custom material carries its hardness (H, and H0 with the size effect) and h*
     custom = {**base, "material": CUSTOM, "E_Pa": 78e9, "material_nu": 0.44, "b_m": 2.885e-10, "w_J_m2": 3.0,
-              "H_Pa": 1e9, "h_star_m": 5e-7, "plasticity": "jackson-green", "size_effect": True}
+              "H_Pa": 1e9, "H0_Pa": 6e8, "h_star_m": 5e-7, "plasticity": "jackson-green", "size_effect": True}
     r = compute(_view(**custom))
-    mat = Material(CUSTOM, E=78e9, nu=0.44, b=2.885e-10, w=3.0, H=1e9, H0=1e9, h_star=5e-7)
+    mat = Material(CUSTOM, E=78e9, nu=0.44, b=2.885e-10, w=3.0, H=1e9, H0=6e8, h_star=5e-7)
     contact = PhysicalContact(mat, surface, adhesion=False, plasticity="jackson-green", size_effect=True)
     assert r.load.to_csv() == contact.load_curve(P).to_csv()
     row = dict((name, value) for name, value, _ in r.derived)["plasticity index ψ"]

@@ -12,7 +12,7 @@ from bokeh.document import Document  # noqa: E402
 
 import asperity  # noqa: E402
 from asperity.explorer.app import ExplorerSession, immediate_runner  # noqa: E402
-from asperity.explorer.fit_panel import FIT_VARY, FitPanel  # noqa: E402
+from asperity.explorer.fit_panel import FIT_VARY, PLASTIC_VARY, FitPanel  # noqa: E402
 from asperity.fit import fit_friction_load, read_data  # noqa: E402
 
 TRUTH = {"alpha": 0.01, "beta": 1000.0, "gamma": 1e-3}
@@ -123,9 +123,27 @@ def test_messages_name_the_users_file_escaped(tmp_path):
     assert panel.info.text.startswith(r"C:\Users\me\data.csv: 1 points")
 
 
-def test_a_plastic_view_is_not_fitted_with_the_elastic_model(tmp_path):
-    """The dimensionless fit has no plastic law: a view with the Jackson-Green law says so
-    instead of fitting an elastic model that is not the one shown."""
-    _, panel = panel_with("n=20&gamma=0&law=jackson-green&H_over_E=0.01", friction_csv(tmp_path))
-    assert panel.run_fit() is None and panel.result is None
-    assert "fits the elastic model" in panel.info.text and "jackson-green" in panel.info.text
+def test_a_plastic_view_fits_alpha_beta_and_the_hardness(tmp_path):
+    """With the Jackson-Green law the panel fits alpha, beta and H/E* of GWFit(law=the view's law)
+    (no gamma), h*/sigma and the rest held, exactly as fit_friction_load; the fitted values go
+    back into the view."""
+    from asperity.elastic_plastic import JacksonGreen
+    from asperity.fit.gw import GWFit
+
+    P = np.geomspace(1.0, 1e4, 25)
+    F = asperity.Model(0.05, 1000.0, law=JacksonGreen(0.004, 1.0)).load_curve(P).F
+    F = F * (1 + 0.02 * np.random.default_rng(4).standard_normal(P.size))
+    path = tmp_path / "plastic.csv"
+    rows = zip(P.tolist(), F.tolist(), strict=True)
+    path.write_text("P,F,F_err\n" + "".join(f"{p!r},{f!r},{0.02 * f!r}\n" for p, f in rows))
+    s, panel = panel_with("n=20&gamma=0&law=jackson-green&alpha=0.04&H_over_E=0.006&h_star_over_sigma=1", path)
+    r = panel.run_fit()
+    ref = fit_friction_load(str(path), GWFit(law=JacksonGreen(0.006, 1.0)), vary=PLASTIC_VARY,
+                            start={"alpha": 0.04, "beta": 1000.0, "H_over_E": 0.006},
+                            fix={"h_star_over_sigma": 1.0, "nu": 0.3, "h_over_b": 1.0}, ci="wald")
+    assert r.model == ref.model == "gw (jackson-green)" and "gamma" not in r.values
+    for name in PLASTIC_VARY:
+        assert r.values[name] == pytest.approx(ref.values[name], rel=1e-9)
+        assert name in panel.info.text
+    panel.use_fitted()
+    assert s.pending["H_over_E"] == r.values["H_over_E"] and s.pending["alpha"] == r.values["alpha"]

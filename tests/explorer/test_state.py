@@ -110,19 +110,23 @@ def test_query_string_round_trip(values):
 def test_every_field_and_the_mode_are_in_the_query():
     s = default_state().replace(material=CUSTOM, mode="physical")
     keys = [pair.split("=")[0] for pair in s.to_query().split("&")]
-    # a distribution's parameters only with it chosen
-    assert keys == [k for k, f in fields().items() if f.group in (None, s["heights"]) and f.when is None]
+    law_only = {"H_over_E", "h_star_over_sigma"}   # the Jackson-Green law's parameters
+    # a distribution's parameters only with it chosen; the custom material's H and h* with it
+    assert keys == [k for k, f in fields().items() if f.group in (None, s["heights"]) and k not in law_only]
+    assert "H_Pa" in keys and "h_star_m" in keys and "gamma" in keys
     chosen = s.replace(heights="johnson")
     keys = [pair.split("=")[0] for pair in chosen.to_query().split("&")]
-    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson") and f.when is None]
-    assert "johnson_kurt" in keys and "weibull_skew" not in keys
-    # the elastic-plastic law's parameters only with that law
-    assert "H_over_E" not in keys and "h_star_over_sigma" not in keys and "law=elastic" in chosen.to_query()
+    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson") and k not in law_only]
+    assert "johnson_kurt" in keys and "weibull_skew" not in keys and "law=elastic" in chosen.to_query()
+    # with the elastic-plastic law: its parameters, and no gamma (it has no adhesion)
     plastic = chosen.replace(law="jackson-green", H_over_E=0.02)
     keys = [pair.split("=")[0] for pair in plastic.to_query().split("&")]
-    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson")]
+    assert keys == [k for k, f in fields().items() if f.group in (None, "johnson") and k != "gamma"]
     back, messages = state_from_query(plastic.to_query())
-    assert messages == [] and back == plastic
+    assert messages == [] and back.to_query() == plastic.to_query()
+    # a table material: none of the custom fields
+    table = s.replace(material="Si")
+    assert not {"E_Pa", "material_nu", "b_m", "w_J_m2", "H_Pa", "h_star_m"} & set(table.shown())
 
 
 def test_tornado_arguments_are_read():

@@ -162,3 +162,52 @@ def test_gw_with_other_heights_predicts_the_library():
         GWFit(contact=contact, heights=h)
     with pytest.raises((TypeError, ValueError), match="^heights must be a HeightDistribution"):
         GWFit(heights="weibull")
+
+
+def test_gw_with_the_jackson_green_law_predicts_the_library_and_recovers_the_hardness():
+    """GWFit(law=JacksonGreen(...)): no gamma, H_over_E and h_star_over_sigma fixed at the law's
+    values unless varied; the friction is Model(..., law=...)'s, and a fit of noisy data from a
+    known hardness brackets it."""
+    from asperity.elastic_plastic import Elastic, JacksonGreen
+    from asperity.fit import fit_friction_load, friction_load_data
+    from asperity.fit.gw import GWFit
+
+    law = JacksonGreen(0.004, 2.0)
+    gw = GWFit(law=law)
+    data = friction_load_data(np.geomspace(1.0, 1e4, 30), np.ones(30))
+    specs = gw.specs(data)
+    assert "gamma" not in specs and (specs["H_over_E"].value, specs["h_star_over_sigma"].value) == (0.004, 2.0)
+    assert not specs["H_over_E"].vary and gw.name == "gw (jackson-green)"
+    v = {k: s.value for k, s in specs.items()} | {"alpha": 0.05, "beta": 1000.0}
+    P = np.geomspace(1.0, 1e4, 30)
+    np.testing.assert_allclose(gw.friction(P, v)[0], asperity.Model(0.05, 1000.0, law=law).load_curve(P).F,
+                               rtol=1e-13)
+    assert GWFit(law=Elastic()).name == "gw" and "gamma" in GWFit(law=Elastic()).specs(data)
+    truth = asperity.Model(0.05, 1000.0, law=JacksonGreen(0.004, 0.0)).load_curve(P).F
+    F = truth * (1 + 0.02 * np.random.default_rng(1).standard_normal(P.size))
+    r = fit_friction_load(friction_load_data(P, F, F_err=0.02 * F), GWFit(law=JacksonGreen(0.006, 0.0)),
+                          vary=["alpha", "beta", "H_over_E"], start={"alpha": 0.05, "beta": 1000.0}, ci="wald")
+    lo, hi = r.parameters["H_over_E"].ci95
+    assert lo < 0.004 < hi and r.values["H_over_E"] != 0.006 and r.redchi < 2.0
+
+
+@pytest.mark.parametrize("kwargs, needle", [
+    ({"law": "jackson-green"}, "law must be asperity.elastic_plastic.Elastic"),
+    ({"law": 0.01}, "law must be"),
+])
+def test_gw_law_refusals(kwargs, needle):
+    from asperity.fit.gw import GWFit
+
+    with pytest.raises(ValueError, match=needle):
+        GWFit(**kwargs)
+
+
+def test_a_physical_fit_takes_the_contacts_law():
+    from asperity.elastic_plastic import JacksonGreen
+    from asperity.fit.gw import GWFit
+    from asperity.physical import PhysicalContact
+    from asperity.surface import Surface
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False)
+    with pytest.raises(ValueError, match="^law: a physical fit takes the contact's per-asperity law"):
+        GWFit(contact=contact, law=JacksonGreen(0.01))

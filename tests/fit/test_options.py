@@ -187,3 +187,31 @@ def test_option_types_are_named_errors():
         fit_joint(None, "amontons")
     assert fit_friction_load(data, "amontons", vary="mu0", fix={"P0": 1.0}).parameters["mu0"].value == \
         pytest.approx(0.3, rel=1e-6)  # one name is a list of one
+
+
+def test_a_contact_for_a_model_without_one_is_refused():
+    """Found by a review: contact= was silently ignored by cos, amontons and the laws."""
+    from asperity.physical import PhysicalContact
+    from asperity.surface import Surface
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False)
+    for model in ("cos", "amontons", "jkr"):
+        with pytest.raises(ValueError, match=f"^contact: model '{model}' takes no contact; only the rough-surface"):
+            get_model(model, contact=contact)
+    with pytest.raises(ValueError, match="^contact: models 'cos', 'amontons' take no contact"):
+        compare_models(LINE, ["cos", "amontons"], contact=contact)
+
+
+def test_a_law_object_and_material_are_given_once():
+    """Found by a review: JKRFit(material='Au') with material='Si' silently used gold."""
+    from asperity.fit.laws import JKRFit
+
+    with pytest.raises(ValueError, match="^material: model 'jkr' was built with material 'Au'; give the material once"):
+        get_model(JKRFit(material="Au"), material="Si")
+    assert get_model(JKRFit(), material="Si").material == material("Si")
+    assert get_model(JKRFit(material="Si"), material="Si").material == material("Si")
+
+
+def test_an_unknown_model_is_named_before_the_material():
+    with pytest.raises(ValueError, match="^unknown model 'jkrr'; valid:"):
+        compare_models(LINE, ["jkrr", "cos"], material="Si")

@@ -161,6 +161,7 @@ def test_a_profile_over_its_budget_keeps_the_wald_interval_and_says_so():
 
 @pytest.mark.parametrize("bad, error", [(0.0, ValueError), (-1.0, ValueError), (math.nan, ValueError),
                                         (-math.inf, ValueError), ("1 minute", ValueError), (True, ValueError),
+                                        (10**400, ValueError),
                                         ([1.0], ValueError)])
 def test_bad_profile_budget_is_refused_by_name(bad, error):
     data = _correlated_fit_data()

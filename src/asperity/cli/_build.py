@@ -18,7 +18,8 @@ from .._warnings import AsperityWarning
 from ._args import CONTACT_OPTIONS
 from ._lists import UsageError, optional_quantity, quantity, quantity_items
 
-__all__ = ["is_physical", "model_from_args", "contact_from_args", "surface_from_args", "friction_from_args",
+__all__ = ["is_physical", "model_from_args", "law_from_args", "contact_from_args", "surface_from_args",
+           "friction_from_args",
            "material_from_args", "heights_from_args", "title", "SurfaceNote"]
 
 
@@ -73,20 +74,27 @@ def model_from_args(args):
     """The :class:`asperity.Model` of ``--alpha --beta --gamma --nu --h-over-b``, the friction
     constants and ``--law --hardness --h-star``."""
     from ..curves import Model
-    from ..elastic_plastic import make_law
 
     for option, value in (("--size-effect", args.size_effect or None), ("--plastic-threshold", args.plastic_threshold)):
         if value is not None:
             raise UsageError(f"{option} applies to a physical contact (--material ...); without it give "
                              "--hardness H/E* and --h-star h*/sigma")
-    law = make_law(args.law or "elastic", H_over_E=_number(args.hardness, "--hardness"),
-                   h_star_over_sigma=_number(args.h_star, "--h-star"))
+    law = law_from_args(args)
     nu = 0.3 if args.nu is None else args.nu
     h_over_b = 1.0 if args.h_over_b is None else args.h_over_b
     friction = friction_from_args(args, physical=False)
     kwargs = {} if friction is None else {"friction": friction}
     return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=h_over_b, law=law,
                  heights=heights_from_args(args), **kwargs)
+
+
+def law_from_args(args):
+    """The dimensionless per-asperity law of ``--law --hardness --h-star`` (H/E*, h*/sigma as
+    numbers): :func:`asperity.elastic_plastic.make_law`'s spec; its ValueError names the option."""
+    from ..elastic_plastic import make_law
+
+    return make_law(args.law or "elastic", H_over_E=_number(args.hardness, "--hardness"),
+                    h_star_over_sigma=_number(args.h_star, "--h-star"))
 
 
 def friction_from_args(args, *, physical: bool):

@@ -12,12 +12,14 @@ from __future__ import annotations
 import argparse
 
 from ._args import BODY_OPTIONS, SURFACE_OPTIONS, UsageError, add_contact_arguments, output_file, quantity
-from ._build import contact_from_args, heights_from_args, material_from_args
+from ._build import contact_from_args, heights_from_args, law_from_args, material_from_args
 
 #: The options that make a rough surface (--R alone is the tip radius of the single-asperity laws).
 SURFACE_ONLY = tuple(name for name in SURFACE_OPTIONS if name != "R")
 #: Options of the contact's per-asperity law and heights (argument names).
 CONTACT_ONLY = ("law", "hardness", "h_star", "size_effect", "plastic_threshold", "interaction")
+#: Of those, the ones the dimensionless gw fit takes too (its law, H/E*, h*/sigma).
+DIMENSIONLESS_GW = ("law", "hardness", "h_star")
 
 
 def _given(args, names) -> bool:
@@ -34,7 +36,9 @@ EPILOG = """Data columns (found by their header):
                  or P_N, F_N, d_m; units of unit-less physical columns from --load-unit etc.
   pull-off rows  a column named after a parameter (alpha, R [nm], sigma_s [nm]) sets it per row
 Models and their parameters (names as in --vary/--fix):
-  gw        alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2 (dimensionless data);
+  gw        alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2 (dimensionless data;
+            with --law jackson-green --hardness H/E* [--h-star h*/sigma]: no gamma, and
+            H_over_E, h_star_over_sigma, fixed unless in --vary);
             with a physical contact (--material/--sigma-s/--R/--eta/--area, or --surface FILE,
             and the other contact options): sigma_s_m, R_m, eta_per_m2, area_m2, w_J_m2, b_m,
             h_m, tau1_Pa, tau2_Pa, a1, a2 (physical data; the contact gives their start values,
@@ -77,8 +81,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                    help="95%% intervals: profile likelihood where the covariance is unreliable (auto), always, "
                         "or never (wald)")
     f.add_argument("--profile-budget", metavar="SECONDS", type=_budget,
-                   help="seconds the profile likelihoods may take in all (default 60; inf: no limit); "
-                        "a profile not finished keeps its Wald interval, with a warning")
+                   help="seconds the profile likelihoods of one fit may take in all (default 60; inf: no limit; "
+                        "each model of --compare has its own); a profile not finished keeps its Wald interval, "
+                        "with a warning")
     f.add_argument("--restarts", choices=("auto", "always", "never"), default="auto",
                    help="repeat the fit from starts a decade away when it looks stuck in a local minimum "
                         "(auto: points out of the model's reach, not converged, or an improbable chi-square), "
@@ -113,6 +118,8 @@ def _budget(text):
 def _profile_budget(args):
     from ..fit.uncertainty import PROFILE_BUDGET
 
+    if args.profile_budget is not None and args.ci == "wald":
+        raise UsageError("--profile-budget limits the profile likelihoods, which --ci wald never computes")
     return PROFILE_BUDGET if args.profile_budget is None else args.profile_budget
 
 
@@ -170,13 +177,14 @@ def _options(args):
     if _given(args, SURFACE_ONLY):  # a rough surface: the multi-asperity contact of gw
         contact = contact_from_args(args)
     else:  # options only a physical rough-surface contact uses: refused, never ignored
-        unused = [f"--{n.replace('_', '-')}" for n in CONTACT_ONLY if getattr(args, n, None) not in (None, False)]
+        unused = [f"--{n.replace('_', '-')}" for n in CONTACT_ONLY
+                  if n not in DIMENSIONLESS_GW and getattr(args, n, None) not in (None, False)]
         if unused:
             verb = "applies" if len(unused) == 1 else "apply"
             raise UsageError(f"{', '.join(unused)} {verb} only to the rough-surface model with a physical contact "
                              "(--material/--E ... with --sigma-s, --R, --eta, --area or --surface FILE); "
                              "the single-asperity laws and the dimensionless gw fit take none of them "
-                             "(the dimensionless gw fit takes --heights)")
+                             "(the dimensionless gw fit takes --heights, --law, --hardness H/E*, --h-star h*/sigma)")
     if _given(args, BODY_OPTIONS):  # the bodies: E* of the single-asperity laws
         material = material_from_args(args)
     if args.R is not None:  # the tip radius of the single-asperity laws
@@ -188,15 +196,23 @@ def _options(args):
 
 
 def _with_heights(names, args, contact):
-    """The model names with 'gw' replaced by a GWFit of ``--heights`` (a physical contact has them already)."""
-    if getattr(args, "heights", None) is None or contact is not None:
+    """The model names with 'gw' replaced by a GWFit of ``--heights`` and ``--law --hardness --h-star``
+    (dimensionless: H/E*, h*/sigma); a physical contact has them already."""
+    given = [f"--{n.replace('_', '-')}" for n in ("heights", *DIMENSIONLESS_GW) if getattr(args, n, None) is not None]
+    if not given or contact is not None:
         return names
     if "gw" not in [str(n).strip().lower() for n in names]:
-        raise UsageError("--heights applies to the rough-surface model gw (the single-asperity laws have one "
-                         "asperity, no summit heights)")
+        verb = "applies" if len(given) == 1 else "apply"
+        raise UsageError(f"{', '.join(given)} {verb} to the rough-surface model gw (the single-asperity laws have "
+                         "one asperity: no summit heights, no plastic law)")
     from ..fit.gw import GWFit
 
-    gw = GWFit(heights=heights_from_args(args))
+    try:
+        law = law_from_args(args)
+    except ValueError as err:
+        raise UsageError(f"--law {args.law or 'elastic'}: {err} (give --hardness H/E* and, for the size effect, "
+                         "--h-star h*/sigma)") from None
+    gw = GWFit(heights=heights_from_args(args) if args.heights is not None else None, law=law)
     return [gw if str(n).strip().lower() == "gw" else n for n in names]
 
 

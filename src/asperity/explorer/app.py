@@ -32,7 +32,16 @@ from . import compute as _compute
 from .controls import make_control
 from .panels import optional_panels
 from .plots import Plots
-from .state import CUSTOM, MATERIAL_KEYS, MODES, default_state, fields, state_from_query, used
+from .state import (
+    CUSTOM,
+    MATERIAL_KEYS,
+    MODES,
+    default_state,
+    fields,
+    material_values,
+    state_from_query,
+    used,
+)
 
 __all__ = ["ExplorerSession", "PageState", "make_document", "attempt", "immediate_runner", "threaded_runner",
            "GROUPS"]
@@ -40,8 +49,9 @@ __all__ = ["ExplorerSession", "PageState", "make_document", "attempt", "immediat
 #: Sections of the control column: (heading, field keys); keys of the other mode are hidden.
 GROUPS = (
     ("Model parameters", ("alpha", "beta", "gamma", "nu", "h_over_b", "law", "H_over_E", "h_star_over_sigma")),
-    ("Physical contact", ("material", "E_Pa", "material_nu", "b_m", "w_J_m2", "H_Pa", "h_star_m", "adhesion",
-                          "plasticity", "size_effect", "interaction", "sigma_s_m", "R_m", "eta_per_m2", "area_m2")),
+    ("Physical contact", ("material", "E_Pa", "material_nu", "b_m", "w_J_m2", "H_Pa", "H0_Pa", "h_star_m",
+                          "adhesion", "plasticity", "size_effect", "interaction", "sigma_s_m", "R_m", "eta_per_m2",
+                          "area_m2")),
     ("Loads and separations", ("P_min", "P_max", "P_min_N", "P_max_N", "d_min", "d_max", "n")),
     ("Hurtado-Kim friction (τ in units of G*, radii in units of b)", ("tau_f1", "tau_f2", "a1", "a2")),
     ("Summit heights", ("heights",)),
@@ -128,6 +138,8 @@ class ExplorerSession:
         self.runner = runner or threaded_runner(doc)
         self.fields = fields()
         wanted, self.link_messages = state_from_query(query or {})
+        if wanted["material"] != CUSTOM:  # a link names a table material: its fields show its values
+            wanted = wanted.replace(**material_values(wanted["material"]))
         self.pending = self.good = None
         self.result = None
         self.errors: dict[str, str] = {}
@@ -233,14 +245,7 @@ class ExplorerSession:
 
     def _material_values(self, name: str) -> dict:
         """The table material's E, nu, b, w, H, h* shown in (and carried by) the custom fields."""
-        from ..materials import material
-
-        try:
-            m = material(name)
-        except ValueError:  # the library will say so when computing
-            return {}
-        values = {"E_Pa": m.E, "material_nu": m.nu, "b_m": m.b, "w_J_m2": m.w, "H_Pa": m.H, "h_star_m": m.h_star}
-        values = {k: v for k, v in values.items() if v is not None}
+        values = material_values(name)
         for k, v in values.items():
             self.controls[k].set(v)
         return values
@@ -303,12 +308,13 @@ class ExplorerSession:
         """The first view: the link's, or if the library rejects it, the defaults (saying why)."""
         self._show_mode(wanted)
         if not self.update(wanted):
-            self.link_messages.append(f"the link's parameters were rejected ({self.failure}); "
-                                      "showing the default view")
+            notes = [*self.link_messages, f"the link's parameters were rejected ({self.failure}); "
+                                          "showing the default view"]
             self.pending = default_state()
             for key, control in self.controls.items():
                 control.set(self.pending[key])
-            self.mode.active = MODES.index(self.pending.mode)
+            self.mode.active = MODES.index(self.pending.mode)  # a mode change clears the link's notes
+            self.link_messages = notes
             self._show_mode(self.pending)
             self.update(self.pending)
 

@@ -39,7 +39,8 @@ import numpy as np
 
 from .state import CUSTOM, ELASTIC, MODES, State, distributions
 
-__all__ = ["Result", "compute", "height_distribution", "friction_law", "asperity_law", "loads", "separations",
+__all__ = ["Result", "compute", "height_distribution", "friction_law", "asperity_law", "model_gamma", "loads",
+           "separations",
            "build_subject", "load_columns", "separation_columns", "pull_off_columns"]
 
 
@@ -115,7 +116,12 @@ def _material(state: State):
     if state["material"] != CUSTOM:
         return material(state["material"])
     return Material(CUSTOM, E=state["E_Pa"], nu=state["material_nu"], b=state["b_m"], w=state["w_J_m2"],
-                    H=state["H_Pa"], H0=state["H_Pa"], h_star=state["h_star_m"])
+                    H=state["H_Pa"], H0=state["H0_Pa"], h_star=state["h_star_m"])
+
+
+def model_gamma(state: State) -> float:
+    """The view's gamma: its value with the elastic law, 0 with the Jackson-Green law (no adhesion)."""
+    return state["gamma"] if state["law"] == ELASTIC else 0.0
 
 
 def asperity_law(state: State):
@@ -134,7 +140,7 @@ def build_subject(state: State):
     if state.mode == MODES[0]:
         from .. import Model
 
-        return Model(state["alpha"], state["beta"], state["gamma"], nu=state["nu"], h_over_b=state["h_over_b"],
+        return Model(state["alpha"], state["beta"], model_gamma(state), nu=state["nu"], h_over_b=state["h_over_b"],
                      friction=friction, heights=heights, law=asperity_law(state))
     from ..physical import PhysicalContact
     from ..surface import Surface
@@ -149,12 +155,13 @@ def _fmt(x: float) -> str:
     return "—" if x is None or not math.isfinite(x) else f"{x:.4g}"
 
 
-def _adhesion_numbers(lam: float, R: float, w: float, E_star: float, h: float, sigma: float):
+def _adhesion_numbers(lam: float, R: float, w: float, E_star: float, h: float, sigma: float, law: str):
     from ..regimes import adhesion_regime, fuller_tabor_parameter, tabor_parameter
 
     if w == 0:
-        none = "— (no adhesion: Hertz)"
-        return [("λ", none, "Maugis parameter (Eq 15)"), ("adhesion regime", "none (Hertz)", ""),
+        which = "Hertz" if law == ELASTIC else "Jackson-Green, elastic-plastic"
+        none = f"— (no adhesion: {which})"
+        return [("λ", none, "Maugis parameter (Eq 15)"), ("adhesion regime", f"none ({which})", ""),
                 ("Tabor μ_T", none, ""), ("Fuller-Tabor θ", none, "")]
     return [("λ", _fmt(lam), "Maugis parameter (Eq 15)"),
             ("adhesion regime", adhesion_regime(lam), "Johnson-Greenwood: DMT below λ = 0.1, JKR above 5"),
@@ -168,17 +175,23 @@ def _derived(state: State, subject, pull_off) -> list[tuple[str, str, str]]:
         from ..groups import maugis_lambda
         from ..surface import surface_from_groups
 
-        a, b, g, hb = state["alpha"], state["beta"], state["gamma"], state["h_over_b"]
+        a, b, g, hb = state["alpha"], state["beta"], model_gamma(state), state["h_over_b"]
         lam = maugis_lambda(a, b, g, hb) if g > 0 else math.nan
         s = surface_from_groups(a, b, 1.0, 1.0, 1.0)  # lengths in units of b, stresses in units of E*
-        rows = _adhesion_numbers(float(lam), s.R, g, 1.0, hb, s.sigma_s)
+        rows = _adhesion_numbers(float(lam), s.R, g, 1.0, hb, s.sigma_s, state["law"])
         where = f" at d/σ = {pull_off.d:.4g}" if pull_off.exists else ""
         rows.insert(2, ("pull-off force", f"{_fmt(pull_off.force)}{where}", "|P|/(N G b²), most tensile force"))
+        if state["law"] != ELASTIC:
+            from ..plasticity import plasticity_index
+
+            psi = plasticity_index(1.0, state["H_over_E"], a * a, 1.0)  # (E*/H)(sigma/R)^1/2 = alpha/(H/E*)
+            rows.append(("plasticity index ψ", _fmt(float(psi)), "α/(H/E*): plastic asperities above about 1"))
         return rows
     c = subject
     rows = [("α, β, γ", f"{_fmt(c.alpha)}, {_fmt(c.beta)}, {_fmt(c.gamma)}", "groups of Eqs 7 and 16"),
             ("N", _fmt(c.N), "asperities (η A0)"), ("force unit", f"{_fmt(c.force_scale)} N", "N G b²")]
-    rows += _adhesion_numbers(c.lam, c.surface.R, c.w, c.E_star, c.h, c.surface.sigma_s)
+    rows += _adhesion_numbers(c.lam, c.surface.R, c.w if c.gamma > 0 else 0.0, c.E_star, c.h, c.surface.sigma_s,
+                              c.law)
     where = f" at d = {pull_off.d:.4g} m" if pull_off.exists else ""
     rows.insert(5, ("pull-off force", f"{_fmt(pull_off.force)} N{where}", "most tensile force"))
     if c.hardness is not None:

@@ -11,12 +11,15 @@ Hurtado-Kim constants, the summit heights):
 ``asperity.fit.fit_friction_load(data, GWFit(heights=...), start={alpha, beta, gamma},
 fix={nu, h_over_b, tau_f1, tau_f2, a1, a2}, vary=('alpha', 'beta', 'gamma'))``.
 
+With the view's Jackson-Green law (no adhesion) it fits :math:`\\alpha, \\beta, H/E^*` of
+``GWFit(heights=..., law=JacksonGreen(...))`` instead, :math:`h^*/\\sigma` held.
+
 The data, the fitted curve and the view's own curve are drawn together (log axes), the
 fitted values with their standard errors and 95 % intervals listed, the fit's warnings
 shown; a second button copies the fitted values into the view's controls.  Fitting is
 dimensionless: in physical mode the panel says so (``asperity fit --material ...`` fits a
-physical contact).  A fit runs on the page's thread and takes about a second; the rest of
-the page waits for it.
+physical contact).  A fit runs in the explorer's worker thread (after, never beside, a
+view's computation) and takes about a second; the page shows it when it ends.
 """
 
 from __future__ import annotations
@@ -30,13 +33,15 @@ from functools import partial
 
 import numpy as np
 
-from .compute import height_distribution
+from .compute import asperity_law, height_distribution
 from .state import ELASTIC, MODES
 
-__all__ = ["FitPanel", "fit_panel", "FIT_VARY", "MAX_UPLOAD_BYTES"]
+__all__ = ["FitPanel", "fit_panel", "FIT_VARY", "PLASTIC_VARY", "fitted_names", "MAX_UPLOAD_BYTES"]
 
 #: The parameters the panel fits (the others stay at the view's values).
 FIT_VARY = ("alpha", "beta", "gamma")
+#: The same with the Jackson-Green law of the view (no adhesion, no gamma: its hardness instead).
+PLASTIC_VARY = ("alpha", "beta", "H_over_E")
 #: Largest file the panel reads (a friction-load table is a few kB).
 MAX_UPLOAD_BYTES = 5_000_000
 _FIXED = ("nu", "h_over_b", "tau_f1", "tau_f2", "a1", "a2")
@@ -64,7 +69,7 @@ class FitPanel:
         self.model = None        # the view's Model (dimensionless mode)
         self.apply_to = None     # set by the app: a function taking {name: value} for the controls
         self.runner = None       # set by the app: its runner (the worker thread); None: at once
-        self.toggle = Checkbox(label="fit: alpha, beta, gamma to measured friction against load "
+        self.toggle = Checkbox(label="fit: alpha, beta, gamma (or H/E*) to measured friction against load "
                                      "(asperity.fit; about a second a fit)", active=False,
                                css_classes=["asp-toggle-fit"])
         self.upload = FileInput(accept=".csv,.txt,.dat", name="fit:file", css_classes=["asp-fit-file"])
@@ -193,16 +198,16 @@ class FitPanel:
         """The fit itself (in the worker thread): a FitResult, or the library's message."""
         from ..fit.gw import GWFit
 
-        if state["law"] != ELASTIC:
-            return (f"the fit panel fits the elastic model (the dimensionless fit has no plastic law); the view's "
-                    f"asperity law is {state['law']}: set it to {ELASTIC} to fit")
+        vary = fitted_names(state)
+        fixed = _FIXED if vary == FIT_VARY else (*_FIXED, "h_star_over_sigma")
         try:
-            model = GWFit(heights=height_distribution(state))  # the view's summit heights
+            # the view's summit heights and asperity law
+            model = GWFit(heights=height_distribution(state), law=asperity_law(state))
             # Wald intervals: profile likelihoods of nearly degenerate parameters (alpha and beta
             # often correlate at |r| ~ 0.999 in friction-load data) can take minutes, and the page
             # would wait; the correlation warning is shown with the intervals.
-            return self.fit.fit_friction_load(data, model, start={k: state[k] for k in FIT_VARY},
-                                              fix={k: state[k] for k in _FIXED}, vary=FIT_VARY, ci="wald")
+            return self.fit.fit_friction_load(data, model, start={k: state[k] for k in vary},
+                                              fix={k: state[k] for k in fixed}, vary=vary, ci="wald")
         except ValueError as err:
             return f"the fit failed: {err}"
 
@@ -219,9 +224,9 @@ class FitPanel:
         self._buttons()
 
     def use_fitted(self) -> None:
-        """Copy the fitted alpha, beta, gamma into the view's controls (the view then updates)."""
+        """Copy the fitted values (alpha, beta and gamma or H/E*) into the view's controls (the view then updates)."""
         if self.result is not None and self.apply_to is not None:
-            self.apply_to({k: float(self.result.values[k]) for k in FIT_VARY})
+            self.apply_to({k: float(self.result.values[k]) for k in _varied(self.result)})
 
     # -- helpers --------------------------------------------------------------------------------
     def _loads(self) -> np.ndarray:
@@ -246,7 +251,7 @@ class FitPanel:
     @staticmethod
     def _report(r) -> str:
         rows = []
-        for name in FIT_VARY:
+        for name in _varied(r):
             p = r.parameters[name]
             err = "—" if p.stderr is None or not np.isfinite(p.stderr) else f"{p.stderr:.3g}"
             lo, hi = (np.nan if x is None else float(x) for x in (p.ci95 or (None, None)))
@@ -257,6 +262,17 @@ class FitPanel:
                 f"<th>95 % interval</th></tr>{''.join(rows)}</table>"
                 f"<div>χ² = {r.chisqr:.4g} over {r.n_points} points, AIC = {r.aic:.4g}</div>"
                 + (f"<ul>{notes}</ul>" if notes else ""))
+
+
+def _varied(result) -> list[str]:
+    """The names a fit varied, in the model's order."""
+    return [name for name, p in result.parameters.items() if p.vary]
+
+
+def fitted_names(state) -> tuple[str, ...]:
+    """The parameters the panel fits for a view: :data:`FIT_VARY` with the elastic law,
+    :data:`PLASTIC_VARY` with the Jackson-Green law."""
+    return FIT_VARY if state["law"] == ELASTIC else PLASTIC_VARY
 
 
 def _immediate(work, done) -> None:

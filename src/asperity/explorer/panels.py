@@ -26,7 +26,7 @@ import importlib.util
 
 import numpy as np
 
-from .compute import asperity_law, friction_law, height_distribution
+from .compute import asperity_law, friction_law, height_distribution, model_gamma
 from .state import MODES
 
 __all__ = ["OPTIONAL_PANELS", "optional_panels", "cycle_panel", "CyclePanel"]
@@ -93,7 +93,7 @@ class CyclePanel:
         preload = float(np.max(result.load.P))
         if s.mode == MODES[1]:
             return result.subject.cycle(preload=preload, n=s["n"])
-        return self.cycle.cycle(s["alpha"], s["beta"], s["gamma"], preload=preload, n=s["n"], nu=s["nu"],
+        return self.cycle.cycle(s["alpha"], s["beta"], model_gamma(s), preload=preload, n=s["n"], nu=s["nu"],
                                 h_over_b=s["h_over_b"], friction=friction_law(s), heights=height_distribution(s),
                                 law=asperity_law(s))
 

@@ -29,7 +29,7 @@ from urllib.parse import parse_qs, urlencode
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS, Quantity
 
 __all__ = ["MODES", "START", "MAX_POINTS", "Field", "State", "fields", "distributions", "parse_value", "number_text",
-           "state_from_query", "default_state", "used", "CUSTOM", "ELASTIC"]
+           "state_from_query", "default_state", "used", "material_values", "CUSTOM", "ELASTIC"]
 
 MODES = ("dimensionless", "physical")
 #: Choice of the material menu meaning "the moduli, b and w typed below".
@@ -158,11 +158,13 @@ def fields() -> dict[str, Field]:
     out = [Field("mode", "choice", MODES[0], choices=MODES, help="dimensionless groups or a physical contact")]
     out += [_registry_field(k, M[k], START[k] if M[k].default in (None, 0.0) else M[k].default, mode=MODES[0])
             for k in ("alpha", "beta", "gamma", "nu", "h_over_b")]
+    # gamma (adhesion) belongs to the elastic law: the Jackson-Green law has none
+    out[-3] = dataclasses.replace(out[-3], when=("law", ELASTIC))
     laws = tuple(LAWS)
     jg = ("law", laws[1])
     out += [Field("law", "choice", ELASTIC, mode=MODES[0], choices=laws, label="asperity law",
-                  help="per-asperity law: elastic (Hertz or Maugis-Dugdale) or Jackson-Green elastic-plastic "
-                       "(no adhesion: gamma = 0)"),
+                  help="per-asperity law: elastic (Hertz or Maugis-Dugdale, with gamma) or Jackson-Green "
+                       "elastic-plastic (no adhesion: no gamma)"),
             dataclasses.replace(_registry_field("H_over_E", M["H_over_E"], START["H_over_E"], mode=MODES[0]),
                                 when=jg),
             dataclasses.replace(_registry_field("h_star_over_sigma", M["h_star_over_sigma"],
@@ -183,8 +185,12 @@ def fields() -> dict[str, Field]:
             _registry_field("material_nu", M["nu"], au.nu, mode=MODES[1], label="ν"),
             _registry_field("b_m", S["b"], au.b, mode=MODES[1], unit="m", label="b"),
             _registry_field("w_J_m2", S["w"], au.w, mode=MODES[1], unit="J/m^2", label="w"),
-            _registry_field("H_Pa", S["hardness"], au.H, mode=MODES[1], unit="Pa", label="H"),
-            _registry_field("h_star_m", S["h_star"], START["h_star"], mode=MODES[1], unit="m", label="h*"),
+            dataclasses.replace(_registry_field("H_Pa", S["hardness"], au.H, mode=MODES[1], unit="Pa", label="H"),
+                                when=("material", CUSTOM)),
+            dataclasses.replace(_registry_field("H0_Pa", S["hardness"], au.H, mode=MODES[1], unit="Pa",
+                                                label="H0 (size effect)"), when=("material", CUSTOM)),
+            dataclasses.replace(_registry_field("h_star_m", S["h_star"], START["h_star"], mode=MODES[1], unit="m",
+                                                label="h*"), when=("material", CUSTOM)),
             Field("adhesion", "flag", True, mode=MODES[1],
                   help="Maugis-Dugdale, with the material's w (off: Hertz)"),
             Field("plasticity", "choice", ELASTIC, mode=MODES[1], choices=laws, label="asperity law",
@@ -202,9 +208,9 @@ def fields() -> dict[str, Field]:
     return {f.key: f for f in out}
 
 
-#: Fields written to the query string only with the custom material (H_Pa is its hardness, and
-#: H0 with the size effect; h_star_m its Nix-Gao length).
-MATERIAL_KEYS = ("E_Pa", "material_nu", "b_m", "w_J_m2", "H_Pa", "h_star_m")
+#: Fields written to the query string only with the custom material (H_Pa its hardness; H0_Pa
+#: and h_star_m its Nix-Gao pair, used with the size effect).
+MATERIAL_KEYS = ("E_Pa", "material_nu", "b_m", "w_J_m2", "H_Pa", "H0_Pa", "h_star_m")
 
 
 @dataclass(frozen=True)
@@ -244,6 +250,21 @@ class State:
         """The query string (without ``?``) of this view; :func:`state_from_query` reads it back."""
         spec = fields() if spec is None else spec
         return urlencode([(k, spec[k].text(self.values[k])) for k in self.shown(spec)], safe=":/")
+
+
+def material_values(name: str) -> dict:
+    """The custom-material fields (E_Pa, material_nu, b_m, w_J_m2, H_Pa, H0_Pa, h_star_m) of table
+    material ``name``, those it has; {} for a name the table does not know (the library says
+    so when computing)."""
+    from ..materials import material
+
+    try:
+        m = material(name)
+    except ValueError:
+        return {}
+    values = {"E_Pa": m.E, "material_nu": m.nu, "b_m": m.b, "w_J_m2": m.w, "H_Pa": m.H, "H0_Pa": m.H0,
+              "h_star_m": m.h_star}
+    return {k: v for k, v in values.items() if v is not None}
 
 
 def used(f: Field, values: Mapping[str, object]) -> bool:

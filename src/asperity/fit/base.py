@@ -113,12 +113,15 @@ class FitModel:
     uses_material : bool
         Whether ``material=`` means anything to it (the single-asperity laws' :math:`E^*` and
         starts); :func:`~asperity.fit.models.get_model` refuses a material for the others.
+    uses_contact : bool
+        Whether ``contact=`` means anything to it (the rough-surface model on physical data).
     """
 
     name = ""
     kinds: tuple[str, ...] = ()
     physical: bool | None = None
     uses_material = False
+    uses_contact = False
     title = ""
 
     def check(self, data: Dataset) -> None:

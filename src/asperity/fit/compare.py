@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from .base import FitModel
 from .engine import parameter_names
-from .models import MODELS, get_model, material_refusal, model_class
+from .models import MODELS, contact_refusal, get_model, material_refusal, model_class
 from .read import as_dataset
 from .result import Comparison
 from .runner import fit_problem
@@ -65,8 +65,8 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
         Repeat a fit that looks stuck in a local minimum from starts a decade away
         (:func:`asperity.fit.runner.run`).
     profile_budget : float
-        Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
-        limit); a profile not finished keeps its Wald interval, with a warning.
+        Seconds the profile likelihoods of each model's fit may take in all (default 60;
+        ``math.inf``: no limit); a profile not finished keeps its Wald interval, with a warning.
 
     Returns
     -------
@@ -102,13 +102,18 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
         twice = sorted({x for x in labels if labels.count(x) > 1})
         raise ValueError("models must be a non-empty list of distinct models, got " +
                          (f"{', '.join(map(repr, twice))} more than once" if twice else "none"))
-    takes = [m.uses_material if isinstance(m, FitModel) else
-             (m.strip().lower() in MODELS and model_class(m.strip().lower()).uses_material) for m in names]
-    if material is not None and not any(takes):
+    unknown = [m for m in names if not isinstance(m, FitModel) and m.strip().lower() not in MODELS]
+    if unknown:
+        raise ValueError(f"unknown model {unknown[0]!r}; valid: {', '.join(MODELS)}")
+    classes = [m if isinstance(m, FitModel) else model_class(m.strip().lower()) for m in names]
+    if material is not None and not any(c.uses_material for c in classes):
         raise ValueError(material_refusal(*labels))
+    if contact is not None and not any(c.uses_contact for c in classes):
+        raise ValueError(contact_refusal(*labels))
     data = as_dataset(data, kind, units, drop_nan)
-    built = [get_model(m, material=material if own else None, contact=contact) for m, own in zip(names, takes,
-                                                                                                  strict=True)]
+    # the material goes to the models that take one (the laws), the contact to gw
+    built = [get_model(m, material=material if c.uses_material else None,
+                       contact=contact if c.uses_contact else None) for m, c in zip(names, classes, strict=True)]
     for m in built:
         m.check(data)
     vary = None if vary is None else parameter_names(vary, "vary")

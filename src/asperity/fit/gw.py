@@ -4,7 +4,11 @@ r"""The multi-asperity model as a fit model: dimensionless, or physical through 
 are fitted with :class:`asperity.Model` and the parameters ``alpha``, ``beta``, ``gamma``
 (varied by default), ``nu``, ``h_over_b`` and the Hurtado-Kim constants ``tau_f1``,
 ``tau_f2``, ``a1``, ``a2`` (fixed at the paper's values unless varied), with Gaussian
-summit heights or those given (``GWFit(heights=...)``, passed as the ``model``).
+summit heights or those given (``GWFit(heights=...)``, passed as the ``model``).  With the
+Jackson-Green elastic-plastic law (``GWFit(law=JacksonGreen(H_over_E, h_star_over_sigma))``,
+non-adhesive) the model has no ``gamma`` and gains ``H_over_E`` and ``h_star_over_sigma``,
+fixed at the law's values unless varied (``vary=["alpha", "beta", "H_over_E"]`` fits the
+hardness).
 
 *Physical* data (newtons, metres) need a :class:`~asperity.physical.PhysicalContact`, which
 gives the material (:math:`E`, :math:`\nu`, hence :math:`E^*` and :math:`G^*`, fixed) and the
@@ -31,6 +35,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..curves import Model
+from ..elastic_plastic import Elastic, JacksonGreen
 from ..friction_stress import ConstantShear, HurtadoKim
 from ..groups import maugis_lambda
 from ..heights import GAUSSIAN, check_heights
@@ -58,6 +63,9 @@ class GWFit(FitModel):
     heights : HeightDistribution, optional
         Summit heights of the dimensionless model (default the Gaussian, Eq 19), e.g.
         ``asperity.heights.Weibull(skew=0.5)``; a physical fit takes the contact's.
+    law : Elastic or JacksonGreen, optional
+        Per-asperity law of the dimensionless model (:mod:`asperity.elastic_plastic`; default
+        elastic); a physical fit takes the contact's.
 
     Examples
     --------
@@ -67,19 +75,30 @@ class GWFit(FitModel):
     """
 
     name = "gw"
+    uses_contact = True
     title = "multi-asperity (Greenwood-Williamson + Hurtado-Kim + Maugis-Dugdale)"
     kinds = ("friction", "force", "pull_off")
 
-    def __init__(self, contact=None, material=None, heights=None):
+    def __init__(self, contact=None, material=None, heights=None, law=None):
         if contact is not None and not isinstance(contact, PhysicalContact):
             raise ValueError(f"contact must be an asperity.physical.PhysicalContact, got {type(contact).__name__}")
         if heights is not None and contact is not None:
             raise ValueError("heights: a physical fit takes the contact's summit heights; give them to the "
                              "PhysicalContact (heights=...) instead")
+        if law is not None and contact is not None:
+            raise ValueError("law: a physical fit takes the contact's per-asperity law; give it to the "
+                             "PhysicalContact (plasticity=..., hardness=...) instead")
+        if law is not None and not isinstance(law, Elastic | JacksonGreen):
+            raise ValueError("law must be asperity.elastic_plastic.Elastic() or JacksonGreen(H_over_E, "
+                             f"h_star_over_sigma) (e.g. make_law('jackson-green', H_over_E=0.01)), got {law!r:.80}")
         self.contact = contact
         self.heights = GAUSSIAN if heights is None else check_heights(heights)
-        if self.heights is not GAUSSIAN:  # the result names the model it fitted
-            self.name = f"gw (heights {self.heights.spec or repr(self.heights)})"
+        self.law = law if isinstance(law, JacksonGreen) else None
+        named = [] if self.law is None else [self.law.name]
+        if self.heights != GAUSSIAN:
+            named.append(f"heights {self.heights.spec or repr(self.heights)}")
+        if named:  # the result names the model it fitted
+            self.name = f"gw ({'; '.join(named)})"
         self._cache: OrderedDict = OrderedDict()
 
     def check(self, data):
@@ -97,9 +116,11 @@ class GWFit(FitModel):
         if not data.physical:
             from ..quantities import MODEL_PARAMETERS as M
 
+            adhesive = [parameter_spec("gamma", 1e-3, physical=False, vary=True)] if self.law is None else [
+                parameter_spec("H_over_E", self.law.H_over_E, physical=False),
+                parameter_spec("h_star_over_sigma", self.law.h_star_over_sigma, physical=False)]
             specs = [parameter_spec("alpha", 0.01, physical=False, vary=True),
-                     parameter_spec("beta", 1000.0, physical=False, vary=True),
-                     parameter_spec("gamma", 1e-3, physical=False, vary=True),
+                     parameter_spec("beta", 1000.0, physical=False, vary=True), *adhesive,
                      parameter_spec("nu", M["nu"].default, physical=False),
                      parameter_spec("h_over_b", M["h_over_b"].default, physical=False),
                      *(parameter_spec(n, M[n].default, physical=False) for n in HK_NAMES)]
@@ -132,8 +153,9 @@ class GWFit(FitModel):
             self._cache.move_to_end(key)
             return hit
         if self.contact is None:
-            model = Model(v["alpha"], v["beta"], v["gamma"], nu=v["nu"], h_over_b=v["h_over_b"],
-                          friction=HurtadoKim(*(v[n] for n in HK_NAMES)), heights=self.heights)
+            law = None if self.law is None else JacksonGreen(v["H_over_E"], v["h_star_over_sigma"])
+            model = Model(v["alpha"], v["beta"], v.get("gamma", 0.0), nu=v["nu"], h_over_b=v["h_over_b"],
+                          friction=HurtadoKim(*(v[n] for n in HK_NAMES)), heights=self.heights, law=law)
             built = (model, 1.0, 1.0, None)
         else:
             c = self.contact
@@ -193,12 +215,12 @@ class GWFit(FitModel):
             return replace(model.separation_curve(d_bar), d=d_bar + d0)
 
     def derived(self, v):
-        needed = (("alpha", "beta", "gamma", "h_over_b") if self.contact is None else
+        needed = (("alpha", "beta", "h_over_b") if self.contact is None else
                   ("sigma_s_m", "R_m", "eta_per_m2", "area_m2", "w_J_m2", "b_m", "h_m"))
         if any(name not in v for name in needed):
             return {}  # some are given per row (pull-off conditions)
         if self.contact is None:
-            if v["gamma"] <= 0:
+            if v.get("gamma", 0.0) <= 0:
                 return {"lam": 0.0}
             return {"lam": float(maugis_lambda(v["alpha"], v["beta"], v["gamma"], v["h_over_b"]))}
         contact = self._build(v)[3]

@@ -63,6 +63,37 @@ def material_refusal(*names: str) -> str:
             "(contact=PhysicalContact(...); --material with --sigma-s, --R, --eta, --area or --surface)")
 
 
+def contact_refusal(*names: str) -> str:
+    """The message refusing ``contact=`` for the models ``names``, which take none."""
+    which = f"model {names[0]!r} takes" if len(names) == 1 else f"models {', '.join(map(repr, names))} take"
+    return (f"contact: {which} no contact; only the rough-surface model gw does (a physical contact: "
+            "--material with --sigma-s, --R, --eta, --area or --surface); the single-asperity laws take "
+            "material= and the tip radius R_m")
+
+
+def _given_model(model: FitModel, material, contact) -> FitModel:
+    """A model object with ``material`` and ``contact``: itself, or a copy of a law given the
+    material it lacks; a material or contact it takes none of, or other than its own, is refused."""
+    if material is not None:
+        if not model.uses_material:
+            raise ValueError(material_refusal(model.name))
+        from ..materials import as_material
+
+        own = getattr(model, "material", None)
+        if own is None:
+            model = type(model)(material=material)
+        elif own != as_material(material):
+            raise ValueError(f"material: model {model.name!r} was built with material {own.name!r}; give "
+                             "the material once (to the model or as material=)")
+    if contact is not None:
+        if not model.uses_contact:
+            raise ValueError(contact_refusal(model.name))
+        if model.contact is not contact:
+            raise ValueError(f"contact: model {model.name!r} was built with {'another' if model.contact else 'no'} "
+                             "contact; give the contact once (GWFit(contact=...) or as contact=)")
+    return model
+
+
 def get_model(name, *, material=None, contact=None) -> FitModel:
     """The :class:`FitModel` called ``name`` (a name of :data:`MODELS`, case-insensitive).
 
@@ -79,18 +110,21 @@ def get_model(name, *, material=None, contact=None) -> FitModel:
     Raises
     ------
     ValueError
-        For an unknown name (the message lists the valid ones), or a material for a model
-        that takes none (``gw``, ``cos``, ``amontons``): refused, never ignored.
+        For an unknown name (the message lists the valid ones), a material for a model that
+        takes none (``gw``, ``cos``, ``amontons``), a contact for a model other than ``gw``,
+        or a model object given another material or contact than its own: refused, never
+        ignored.
     """
     if isinstance(name, FitModel):
-        if material is not None and not name.uses_material:
-            raise ValueError(material_refusal(name.name))
-        return name
+        return _given_model(name, material, contact)
     key = str(name).strip().lower()
     if key not in MODELS:
         raise ValueError(f"unknown model {name!r}; valid: {', '.join(MODELS)}")
-    if material is not None and not model_class(key).uses_material:
+    cls = model_class(key)
+    if material is not None and not cls.uses_material:
         raise ValueError(material_refusal(key))
+    if contact is not None and not cls.uses_contact:
+        raise ValueError(contact_refusal(key))
     if key == "gw":
         return _gw()(contact=contact, material=material)
     return MODELS[key](material=material)

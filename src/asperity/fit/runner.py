@@ -189,7 +189,7 @@ def check_budget(profile_budget) -> float:
         return math.inf
     try:
         return check_scalar_positive(profile_budget, "profile_budget")
-    except ValueError:
+    except (ValueError, OverflowError):
         raise ValueError(f"profile_budget must be a number of seconds > 0, or math.inf for no limit (valid range "
                          f"0 < profile_budget <= inf), got {profile_budget!r:.60}") from None
 
