@@ -1,4 +1,5 @@
-"""Input checks shared by every public function.
+"""Input checks shared by every public function (file names: :mod:`asperity._validation_files`,
+re-exported here).
 
 Each check raises :class:`ValueError` naming the parameter and its valid range, so a
 user never meets a silent NaN or a traceback from deep inside SciPy.
@@ -13,6 +14,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._validation_files import IMAGE_FORMATS, check_image, check_path
+from ._validation_files import short_repr as _short_repr
 from .units import to_si
 
 __all__ = [
@@ -34,6 +37,8 @@ __all__ = [
     "check_integer",
     "check_1d",
     "check_path",
+    "check_image",
+    "IMAGE_FORMATS",
     "check_finite_result",
     "check_scalar_real",
     "check_broadcast",
@@ -298,30 +303,6 @@ def check_1d(value, name: str, *, allow_empty: bool = False) -> np.ndarray:
     return arr.reshape(-1)
 
 
-def check_path(value, name: str, *, directory: bool = False) -> str:
-    """A file (or, with ``directory``, a directory) name: ``str`` or ``os.PathLike``, not empty.
-
-    A file name that is an existing directory is a :class:`ValueError`, as is a directory
-    name that is an existing file; another type is a :class:`TypeError`.  Returns the name
-    as ``str``.
-    """
-    import os
-
-    if isinstance(value, bytes) or not isinstance(value, str | os.PathLike):
-        raise TypeError(f"{name} must be a file name (str or os.PathLike), got {type(value).__name__} "
-                        f"{_short_repr(value)}")
-    text = os.fspath(value)
-    if not isinstance(text, str):
-        raise TypeError(f"{name} must be a file name (str or os.PathLike), got {type(value).__name__}")
-    if text == "":
-        raise ValueError(f"{name} must not be empty")
-    if not directory and os.path.isdir(text):
-        raise ValueError(f"{name} = {text!r} is a directory; give a file name")
-    if directory and os.path.exists(text) and not os.path.isdir(text):
-        raise ValueError(f"{name} = {text!r} is a file, not a directory")
-    return text
-
-
 def check_positive_scaled(value, name: str, factor: float):
     """``factor * value`` for a positive ``value`` (:func:`check_positive`), refusing by name a product
     that overflows (e.g. :math:`K = \\tfrac43E^*` of an E* near the largest double)."""
@@ -348,12 +329,6 @@ def check_finite_result(result, what: str, **inputs):
     named = {k: v for k, v in inputs.items() if extreme(v)} or inputs
     listed = ", ".join(f"{k} = {_short_repr(v)}" for k, v in named.items())
     raise ValueError(f"{what} overflows double precision for {listed}: give values of physical size")
-
-
-def _short_repr(value) -> str:
-    import reprlib
-
-    return reprlib.repr(value)
 
 
 def _reject_non_real(value, name: str) -> None:
@@ -422,24 +397,3 @@ def check_overflow(result, name: str, limit, value, given: dict | None = None):
         raise ValueError(f"{name} must be <= {lim:.6g}{context} (beyond, the result overflows double precision), "
                          f"got {got!r}")
     return result
-
-
-#: Image formats the plotting functions write (matplotlib's Agg, PDF, SVG and PS back ends).
-IMAGE_FORMATS = ("png", "pdf", "svg", "svgz", "eps", "ps", "jpg", "jpeg", "tif", "tiff", "webp")
-
-
-def check_image(path, fmt=None, name: str = "path") -> tuple[str, str]:
-    """An image file name and its format: ``fmt`` (a string of :data:`IMAGE_FORMATS`) or the
-    extension of ``path`` (png without one), as ``(path, fmt)``; errors name ``name`` or ``fmt``."""
-    import os
-
-    path = check_path(path, name)
-    if fmt is None:
-        fmt, what = os.path.splitext(path)[1][1:].lower() or "png", f"{name} (its extension)"
-    elif isinstance(fmt, str):
-        fmt, what = fmt.lower(), "fmt"
-    else:
-        raise TypeError(f"fmt must be an image format name (a string), got {type(fmt).__name__}")
-    if fmt not in IMAGE_FORMATS:
-        raise ValueError(f"{what}: {fmt!r} is not an image format; give one of {', '.join(IMAGE_FORMATS)}")
-    return path, fmt
