@@ -278,6 +278,8 @@ def test_describe_names_every_quantity(surface):
         assert needle in text, needle
     hertz = PhysicalContact("Au", surface, adhesion=False).describe()
     assert "w = 0 (no adhesion: Hertz)" in hertz and "lambda = 0 (no adhesion: Hertz)" in hertz
+    plastic = PhysicalContact("Au", surface, adhesion=False, plasticity="jackson-green").describe()
+    assert "w = 0 (no adhesion: Jackson-Green)" in plastic and "(no adhesion: Jackson-Green)," in plastic
 
 
 def test_constant_shear_is_stated_in_pascals(surface):

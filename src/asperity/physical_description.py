@@ -97,7 +97,8 @@ class ContactDescription:
         past omega_c); interaction: none
         """
         s, f = self.surface, self._friction_dict()
-        w = f"w = {format_si(self.w, 'J/m^2')}" if self.w > 0 else "w = 0 (no adhesion: Hertz)"
+        plain = "Hertz" if self.law == "elastic" else "Jackson-Green"
+        w = f"w = {format_si(self.w, 'J/m^2')}" if self.w > 0 else f"w = 0 (no adhesion: {plain})"
         surface = (f"surface: sigma_s = {format_si(s.sigma_s, 'm')}, R = {format_si(s.R, 'm')}, "
                    f"eta = {s.eta:.4g} 1/m^2, A0 = {s.area:.4g} m^2, N = {self.N:.4g} summits"
                    + (f", heights {self.heights.spec}" if self.heights is not GAUSSIAN and self.heights.spec else "")
@@ -116,7 +117,7 @@ class ContactDescription:
             f"h = {format_si(self.h, 'm')}, b = {format_si(self.b, 'm')}",
             surface,
             f"groups: alpha = {self.alpha:.4g}, beta = {self.beta:.4g}, gamma = {self.gamma:.4g}, "
-            f"lambda = {self.lam:.4g} ({self.regime if self.gamma else 'no adhesion: Hertz'}), "
+            f"lambda = {self.lam:.4g} ({self.regime if self.gamma else 'no adhesion: ' + plain}), "
             f"h/b = {self.h_over_b:.4g}",
             friction,
             self._describe_law(),

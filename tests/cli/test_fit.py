@@ -183,7 +183,8 @@ CASES = {
                                 "--profile-budget limits the profile likelihoods, which --ci wald never computes"),
     "contact ignored": ("P,F\n1,2\n2,3\n3,4\n", ["--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2", "--area",
                                                   "1mm^2", "--material", "Si"],
-                        "contact: model 'amontons' takes no contact"),
+                        "--sigma-s, --eta, --area: surface options make a physical contact, which only the "
+                        "rough-surface model gw takes; model amontons takes none"),
     "model and compare": ("P,F\n1,2\n2,3\n3,4\n", ["--compare", "cos"], "give --model or --compare, not both"),
 }
 

@@ -274,3 +274,16 @@ def test_the_jackson_green_law_has_no_gamma():
     assert f"<td>{0.02 / query_state(s)['H_over_E']:.4g}</td>" in s.page.derived_html   # psi = alpha/(H/E*)
     s.controls["law"].widget.value = "elastic"
     assert s.controls["gamma"].layout.visible and "gamma=0.001" in s.page.query
+
+
+def test_editing_a_table_materials_value_shows_the_custom_fields_and_says_what_it_kept():
+    """Found by a review: after a switch to custom by editing, H, H0, h* stayed hidden though
+    used; values the table material lacks are kept from the fields, and the page says so."""
+    s = session("mode=physical&material=Cu&adhesion=0&plasticity=jackson-green")
+    s.controls["material"].widget.value = "Si"
+    assert not s.controls["H0_Pa"].layout.visible
+    s.controls["E_Pa"].text.value = "170 GPa"
+    assert s.controls["material"].widget.value == CUSTOM
+    assert all(s.controls[k].layout.visible for k in ("H_Pa", "H0_Pa", "h_star_m"))
+    assert "custom material from Si, which has no H0 (size effect), h* in the table" in s.page.messages_html
+    assert s.result.subject.material.H == material("Si").H

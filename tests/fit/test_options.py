@@ -215,3 +215,36 @@ def test_a_law_object_and_material_are_given_once():
 def test_an_unknown_model_is_named_before_the_material():
     with pytest.raises(ValueError, match="^unknown model 'jkrr'; valid:"):
         compare_models(LINE, ["jkrr", "cos"], material="Si")
+
+
+def test_gw_objects_with_a_contact_a_material_or_pull_off_data():
+    """Found by a review: GWFit() given contact= was refused with a wrong message, GWFit(material=)
+    was ignored, and the Jackson-Green law 'fitted' pull-off data with a model of zero force."""
+    from asperity.elastic_plastic import JacksonGreen
+    from asperity.fit import fit_pull_off, pull_off_data
+    from asperity.fit.gw import GWFit
+    from asperity.heights import Weibull
+    from asperity.physical import PhysicalContact
+    from asperity.surface import Surface
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False)
+    plain = get_model(GWFit(), contact=contact)
+    assert plain.contact is contact and type(plain) is GWFit
+    with pytest.raises(ValueError, match="has its own summit heights or law, but a physical fit takes those of its"):
+        get_model(GWFit(heights=Weibull(skew=0.5)), contact=contact)
+    with pytest.raises(ValueError, match="^material: model 'gw' takes no material"):
+        GWFit(material="Au")
+    data = pull_off_data([1.0, 2.0, 3.0], conditions={"beta": [100.0, 200.0, 300.0]})
+    with pytest.raises(ValueError, match="the Jackson-Green law has no adhesion, hence no pull-off force"):
+        fit_pull_off(data, GWFit(law=JacksonGreen(0.01)))
+
+
+def test_a_log_parameter_varied_from_zero_says_what_to_give():
+    from asperity.elastic_plastic import JacksonGreen
+    from asperity.fit.gw import GWFit
+
+    P = np.geomspace(1.0, 1e3, 10)
+    data = friction_load_data(P, 0.01 * P)
+    with pytest.raises(ValueError, match="^parameter 'h_star_over_sigma' = 0 cannot be varied from there: it is fitted "
+                                         "in log10, so its start must be > 0"):
+        fit_friction_load(data, GWFit(law=JacksonGreen(0.01)), vary=["alpha", "h_star_over_sigma"])

@@ -175,6 +175,14 @@ def _options(args):
     start = {k: _value(k, v, "--start") for k, v in _pairs(args.start, "--start").items()}
     contact = material = None
     if _given(args, SURFACE_ONLY):  # a rough surface: the multi-asperity contact of gw
+        names = _names(args.compare, "--compare") if args.compare is not None else [args.model or "gw"]
+        if "gw" not in [n.strip().lower() for n in names]:
+            given = ", ".join(f"--{n.replace('_', '-')}" for n in SURFACE_ONLY
+                              if getattr(args, n, None) not in (None, False))
+            raise UsageError(f"{given}: surface options make a physical contact, which only the rough-surface "
+                             f"model gw takes; {'model' if len(names) == 1 else 'models'} {', '.join(names)} "
+                             f"{'takes' if len(names) == 1 else 'take'} none: drop them (a single-asperity law "
+                             "takes --material and the tip radius --R)")
         contact = contact_from_args(args)
     else:  # options only a physical rough-surface contact uses: refused, never ignored
         unused = [f"--{n.replace('_', '-')}" for n in CONTACT_ONLY

@@ -223,15 +223,22 @@ class ExplorerSession:
         if self.errors.pop(key, None) is not None:
             self._show_messages()
         changes = {key: value}
+        note = None
         if key in MATERIAL_KEYS and self.pending["material"] != CUSTOM:
+            table = self.pending["material"]
             changes["material"] = CUSTOM
             self.controls["material"].set(CUSTOM)
+            lacking = [self.fields[k].label or k for k in MATERIAL_KEYS if k not in material_values(table)]
+            if lacking:  # the custom copy keeps the fields' values where the table has none: say so
+                note = (f"custom material from {table}, which has no {', '.join(lacking)} in the table: the "
+                        "values shown for them are used")
         if key == "material" and value != CUSTOM:
             changes.update(self._material_values(value))
         self.pending = self.pending.replace(**changes)
-        if key in ("mode", "heights") or any(f.when and f.when[0] == key for f in self.fields.values()):
+        if any(k in ("mode", "heights") or any(f.when and f.when[0] == k for f in self.fields.values())
+               for k in changes):
             self._show_mode(self.pending)
-        self.link_messages = []
+        self.link_messages = [note] if note else []
         self.request()
 
     def set_values(self, values: dict) -> None:

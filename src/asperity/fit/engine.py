@@ -378,6 +378,9 @@ def _check_values(params):
         if not math.isfinite(p.value):
             raise ValueError(f"parameter {name!r} must be finite, got {p.value!r}")
         q_lo, q_hi = p.spec.lo, p.spec.hi
+        if p.vary and p.spec.log and q_lo <= p.value <= 0:
+            raise ValueError(f"parameter {name!r} = {p.value:g} cannot be varied from there: it is fitted in log10, "
+                             f"so its start must be > 0 (give start {name}=...)")
         if p.value < q_lo or p.value > q_hi or (p.vary and p.spec.log and p.value <= 0):
             raise ValueError(f"parameter {name!r} = {p.value:g} is outside its valid range ({p.spec.meaning}; "
                              f"{q_lo:g} .. {q_hi:g}{', > 0: fitted in log10' if p.spec.log else ''})")

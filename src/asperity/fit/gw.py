@@ -58,8 +58,8 @@ class GWFit(FitModel):
     ----------
     contact : PhysicalContact, optional
         Needed for physical data: the material and the start values.
-    material : Material or str, optional
-        Unused (the contact holds the material); accepted so all models are built alike.
+    material : None
+        Refused if given (the contact holds the material); accepted so all models are built alike.
     heights : HeightDistribution, optional
         Summit heights of the dimensionless model (default the Gaussian, Eq 19), e.g.
         ``asperity.heights.Weibull(skew=0.5)``; a physical fit takes the contact's.
@@ -85,6 +85,10 @@ class GWFit(FitModel):
         if heights is not None and contact is not None:
             raise ValueError("heights: a physical fit takes the contact's summit heights; give them to the "
                              "PhysicalContact (heights=...) instead")
+        if material is not None:
+            from .models import material_refusal
+
+            raise ValueError(material_refusal(self.name))
         if law is not None and contact is not None:
             raise ValueError("law: a physical fit takes the contact's per-asperity law; give it to the "
                              "PhysicalContact (plasticity=..., hardness=...) instead")
@@ -106,6 +110,9 @@ class GWFit(FitModel):
         if data.physical and self.contact is None:
             raise ValueError("model 'gw' on physical data needs a contact (PhysicalContact: material and surface; "
                              "--material, --sigma-s, --R, --eta, --area)")
+        if self.law is not None and data.kind == "pull_off":
+            raise ValueError(f"model {self.name!r}: the Jackson-Green law has no adhesion, hence no pull-off force; "
+                             "pull-off data need the elastic law (with gamma)")
         if not data.physical and self.contact is not None:
             raise ValueError("a contact was given but the data are dimensionless (P, F, d): drop the contact, or "
                              "give the data in physical units")
@@ -220,6 +227,8 @@ class GWFit(FitModel):
         if any(name not in v for name in needed):
             return {}  # some are given per row (pull-off conditions)
         if self.contact is None:
+            if self.law is not None:
+                return {}  # no adhesion, no lambda
             if v.get("gamma", 0.0) <= 0:
                 return {"lam": 0.0}
             return {"lam": float(maugis_lambda(v["alpha"], v["beta"], v["gamma"], v["h_over_b"]))}

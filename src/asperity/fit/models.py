@@ -88,9 +88,15 @@ def _given_model(model: FitModel, material, contact) -> FitModel:
     if contact is not None:
         if not model.uses_contact:
             raise ValueError(contact_refusal(model.name))
+        if model.contact is None and model.name == "gw":  # a plain GWFit(): the contact's fit
+            return type(model)(contact=contact)
+        if model.contact is None:
+            raise ValueError(f"contact: model {model.name!r} has its own summit heights or law, but a physical fit "
+                             "takes those of its contact: give them to the PhysicalContact (heights=..., "
+                             "plasticity='jackson-green', adhesion=False) and fit 'gw' with contact=")
         if model.contact is not contact:
-            raise ValueError(f"contact: model {model.name!r} was built with {'another' if model.contact else 'no'} "
-                             "contact; give the contact once (GWFit(contact=...) or as contact=)")
+            raise ValueError(f"contact: model {model.name!r} was built with another contact; give the contact once "
+                             "(GWFit(contact=...) or as contact=)")
     return model
 
 
