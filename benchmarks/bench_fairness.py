@@ -113,6 +113,18 @@ def summit_statistics(seeds, grid):
                   f"{np.median(s.R / m.R):8.3f}")
 
 
+def single_summit_spots(force, s, dx, grid):
+    """(area, force, summit index) of each boundary-element contact spot (pixel forces ``force``)
+    that holds exactly one of the summits ``s``."""
+    ii, jj = np.round(s.x / dx).astype(int) % grid, np.round(s.y / dx).astype(int) % grid
+    lab, n = label_spots(force > 0, periodic=True)
+    Fs = ndimage.sum(force, lab, index=np.arange(1, n + 1))
+    As = ndimage.sum(force > 0, lab, index=np.arange(1, n + 1)) * dx * dx
+    count = np.bincount(lab[ii, jj], minlength=n + 1)[1:]
+    which = {int(lab[ii[k], jj[k]]) - 1: k for k in range(len(s)) if lab[ii[k], jj[k]] > 0}
+    return [(As[q], Fs[q], which[q]) for q in np.flatnonzero(count == 1)]
+
+
 def hertz_sum_and_spots(seeds, grid):
     print(f"\n3-5. Deterministic Hertz sum over the detected summits, single-summit spots, kappa ({grid}^2)")
     for kind, hurst in SURFACES:
@@ -137,16 +149,10 @@ def hertz_sum_and_spots(seeds, grid):
             print("    kappa_BEM = A/A0 / (p/E* h')      " + " ".join(f"{x:5.3f}" for x in kappa) +
                   f"   (Persson {KAPPA_PERSSON:.3f}, BGT {KAPPA_BGT:.3f})")
             s = hs["geometric"][0]
-            ii, jj = np.round(s.x / dx).astype(int) % grid, np.round(s.y / dx).astype(int) % grid
             line = []
             for f in forces[:5]:
-                lab, n = label_spots(f > 0, periodic=True)
-                Fs = ndimage.sum(f, lab, index=np.arange(1, n + 1))
-                As = ndimage.sum(f > 0, lab, index=np.arange(1, n + 1)) * dx * dx
-                count = np.bincount(lab[ii, jj], minlength=n + 1)[1:]
-                own = np.flatnonzero(count == 1)
-                which = {int(lab[ii[k], jj[k]]) - 1: k for k in range(len(s)) if lab[ii[k], jj[k]] > 0}
-                ratio = [As[q] / (math.pi * (3 * Fs[q] * s.R[which[q]] / (4 * MAT.E_star)) ** (2 / 3)) for q in own]
+                ratio = [A / (math.pi * (3 * F * s.R[k] / (4 * MAT.E_star)) ** (2 / 3))
+                         for A, F, k in single_summit_spots(f, s, dx, grid)]
                 line.append(f"{np.median(ratio):5.3f} ({len(ratio)})" if ratio else "  -  ")
             print("    single-summit spots: median A_BEM/A_Hertz(F_spot), geometric radius (spots): " + " ".join(line))
 
@@ -230,16 +236,10 @@ def shape_law(seeds, grid, reaches=(0.5, 0.75, 1.0)):
                 print(f"    shape sum / BEM, reach {reach:4.2f}     " +
                       " ".join("  -  " if not np.isfinite(x) else f"{x:5.3f}" for x in ratio))
             a, delta, Ptab = tables[max(reaches)]
-            ii, jj = np.round(s.x / dx).astype(int) % grid, np.round(s.y / dx).astype(int) % grid
             line = []
             for f in forces[:5]:
-                lab, n = label_spots(f > 0, periodic=True)
-                Fs = ndimage.sum(f, lab, index=np.arange(1, n + 1))
-                As = ndimage.sum(f > 0, lab, index=np.arange(1, n + 1)) * dx * dx
-                count = np.bincount(lab[ii, jj], minlength=n + 1)[1:]
-                which = {int(lab[ii[k], jj[k]]) - 1: k for k in range(len(s)) if lab[ii[k], jj[k]] > 0}
-                ratio = [As[q] / (np.pi * np.interp(Fs[q], Ptab[which[q]], a, right=np.nan) ** 2)
-                         for q in np.flatnonzero(count == 1)]
+                ratio = [A / (np.pi * np.interp(F, Ptab[k], a, right=np.nan) ** 2)
+                         for A, F, k in single_summit_spots(f, s, dx, grid)]
                 ratio = [x for x in ratio if np.isfinite(x)]
                 line.append(f"{np.median(ratio):5.3f} ({len(ratio)})" if ratio else "  -  ")
             print("    single-summit spots: median A_BEM/A_shape(F_spot): " + " ".join(line))
