@@ -201,7 +201,7 @@ def test_registry_and_make_law():
     (lambda: make_law("kogut"), r"unknown law 'kogut'; known: elastic, jackson-green"),
     (lambda: make_law("elastic", H_over_E=0.01), r"elastic law takes no hardness"),
     (lambda: make_law("jackson-green"), r"needs the hardness H_over_E"),
-    (lambda: JacksonGreen(0.0), r"H_over_E must be > 0"),
+    (lambda: JacksonGreen(0.0), r"H_over_E \(hardness H/E\*\) must lie in \(0, 0.142\] for the Jackson-Green law"),
     (lambda: JacksonGreen(0.2), r"H_over_E .* \(0, 0.142\]"),
     (lambda: JacksonGreen(float("nan")), r"H_over_E must be finite"),
     (lambda: JacksonGreen(0.01, -1.0), r"h_star_over_sigma must be >= 0"),

@@ -27,6 +27,7 @@ from scipy import optimize
 
 from ._validation import (
     as_float_array,
+    check_scalar_real,
     check_scalar_sign,
 )
 from .asperity_law import AsperityLaw, ModelParameters
@@ -67,8 +68,8 @@ class JacksonGreen:
     plastic: ClassVar[bool] = True
 
     def __post_init__(self):
-        H = check_scalar_sign(self.H_over_E, "H_over_E", positive=True)
-        if H / 2.84 > E_Y_MAX:
+        H = check_scalar_real(self.H_over_E, "H_over_E")
+        if not 0.0 < H or H / 2.84 > E_Y_MAX:
             raise ValueError(f"H_over_E (hardness H/E*) must lie in (0, {E_Y_MAX * 2.84:.3g}] for the Jackson-Green "
                              f"law (yield strain S_y/E* = H/(2.84 E*) <= {E_Y_MAX:g}), got {self.H_over_E!r}")
         object.__setattr__(self, "H_over_E", H)
