@@ -40,8 +40,7 @@ import numpy as np
 from .state import CUSTOM, ELASTIC, MODES, State, distributions
 
 __all__ = ["Result", "compute", "height_distribution", "friction_law", "asperity_law", "model_gamma", "loads",
-           "separations",
-           "build_subject", "load_columns", "separation_columns", "pull_off_columns"]
+           "separations", "build_subject", "load_columns", "separation_columns", "pull_off_columns"]
 
 
 @dataclass(frozen=True)

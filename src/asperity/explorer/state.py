@@ -159,7 +159,7 @@ def fields() -> dict[str, Field]:
     out += [_registry_field(k, M[k], START[k] if M[k].default in (None, 0.0) else M[k].default, mode=MODES[0])
             for k in ("alpha", "beta", "gamma", "nu", "h_over_b")]
     # gamma (adhesion) belongs to the elastic law: the Jackson-Green law has none
-    out[-3] = dataclasses.replace(out[-3], when=("law", ELASTIC))
+    out = [dataclasses.replace(f, when=("law", ELASTIC)) if f.key == "gamma" else f for f in out]
     laws = tuple(LAWS)
     jg = ("law", laws[1])
     out += [Field("law", "choice", ELASTIC, mode=MODES[0], choices=laws, label="asperity law",
