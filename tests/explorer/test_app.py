@@ -239,7 +239,8 @@ def test_law_plasticity_and_interaction_controls():
     assert s.controls["H_Pa"].text.value == number_text(material("Si").H)
 
 
-@pytest.mark.parametrize("query", ["mode=physical&plasticity=jackson-green", "mode=physical&interaction=cgp2008",
+@pytest.mark.parametrize("query", ["mode=physical&material=Au/mica&plasticity=jackson-green",
+                                   "mode=physical&interaction=cgp2008",
                                    "mode=physical&adhesion=0&size_effect=1"])
 def test_a_rejected_physical_link_says_so(query):
     """Found by a review: the mode reset of the fallback cleared the note (physical links only)."""
@@ -287,3 +288,17 @@ def test_editing_a_table_materials_value_shows_the_custom_fields_and_says_what_i
     assert all(s.controls[k].layout.visible for k in ("H_Pa", "H0_Pa", "h_star_m"))
     assert "custom material from Si, which has no H0 (size effect), h* in the table" in s.page.messages_html
     assert s.result.subject.material.H == material("Si").H
+
+
+def test_the_physical_jackson_green_law_has_no_adhesion_control():
+    """As gamma in dimensionless mode: with the Jackson-Green law the adhesion flag is hidden
+    and not used (the law has none), so choosing the law never fails on it."""
+    s = session("mode=physical")
+    assert s.controls["adhesion"].layout.visible
+    s.controls["plasticity"].widget.value = "jackson-green"
+    assert s.failure is None, s.failure
+    assert not s.controls["adhesion"].layout.visible and "adhesion=" not in s.page.query
+    assert s.result.subject.gamma == 0.0 and s.result.subject.law == "jackson-green"
+    assert "no adhesion: Jackson-Green" in s.page.derived_html
+    s.controls["plasticity"].widget.value = "elastic"
+    assert s.controls["adhesion"].layout.visible and s.result.subject.gamma > 0

@@ -145,7 +145,8 @@ def build_subject(state: State):
     from ..surface import Surface
 
     surface = Surface(sigma_s=state["sigma_s_m"], R=state["R_m"], eta=state["eta_per_m2"], area=state["area_m2"])
-    return PhysicalContact(_material(state), surface, friction=friction, adhesion=state["adhesion"],
+    adhesion = state["adhesion"] and state["plasticity"] == ELASTIC  # the Jackson-Green law has none
+    return PhysicalContact(_material(state), surface, friction=friction, adhesion=adhesion,
                            heights=heights, plasticity=state["plasticity"], size_effect=state["size_effect"],
                            interaction=state["interaction"])
 

@@ -191,8 +191,8 @@ def fields() -> dict[str, Field]:
                                                 label="H0 (size effect)"), when=("material", CUSTOM)),
             dataclasses.replace(_registry_field("h_star_m", S["h_star"], START["h_star"], mode=MODES[1], unit="m",
                                                 label="h*"), when=("material", CUSTOM)),
-            Field("adhesion", "flag", True, mode=MODES[1],
-                  help="Maugis-Dugdale, with the material's w (off: Hertz)"),
+            Field("adhesion", "flag", True, mode=MODES[1], when=("plasticity", ELASTIC),
+                  help="Maugis-Dugdale, with the material's w (off: Hertz); the Jackson-Green law has none"),
             Field("plasticity", "choice", ELASTIC, mode=MODES[1], choices=laws, label="asperity law",
                   help="per-asperity law: elastic, or Jackson-Green elastic-plastic with the material's "
                        "hardness H (no adhesion)"),
