@@ -115,6 +115,19 @@ def _budget(text):
         raise argparse.ArgumentTypeError(f"expected seconds > 0 or inf, got {text!r}") from None
 
 
+def _model_names(args) -> list[str]:
+    """The models named by --compare (a list) or --model (default gw)."""
+    return _names(args.compare, "--compare") if args.compare is not None else [args.model or "gw"]
+
+
+def _takes_material(names) -> bool:
+    """Whether any of the models ``names`` takes a material (the single-asperity laws)."""
+    from ..fit.models import MODELS, model_class
+
+    keys = [n.strip().lower() for n in names]
+    return any(k in MODELS and model_class(k).uses_material for k in keys)
+
+
 def _profile_budget(args):
     from ..fit.uncertainty import PROFILE_BUDGET
 
@@ -174,8 +187,8 @@ def _options(args):
     fix = {k: _value(k, v, "--fix") for k, v in _pairs(args.fix, "--fix").items()}
     start = {k: _value(k, v, "--start") for k, v in _pairs(args.start, "--start").items()}
     contact = material = None
+    names = _model_names(args)
     if _given(args, SURFACE_ONLY):  # a rough surface: the multi-asperity contact of gw
-        names = _names(args.compare, "--compare") if args.compare is not None else [args.model or "gw"]
         if "gw" not in [n.strip().lower() for n in names]:
             given = ", ".join(f"--{n.replace('_', '-')}" for n in SURFACE_ONLY
                               if getattr(args, n, None) not in (None, False))
@@ -193,8 +206,8 @@ def _options(args):
                              "(--material/--E ... with --sigma-s, --R, --eta, --area or --surface FILE); "
                              "the single-asperity laws and the dimensionless gw fit take none of them "
                              "(the dimensionless gw fit takes --heights, --law, --hardness H/E*, --h-star h*/sigma)")
-    if _given(args, BODY_OPTIONS):  # the bodies: E* of the single-asperity laws
-        material = material_from_args(args)
+    if _given(args, BODY_OPTIONS) and (contact is None or _takes_material(names)):
+        material = material_from_args(args)  # E* of the single-asperity laws (a contact holds its own)
     if args.R is not None:  # the tip radius of the single-asperity laws
         R = quantity(args.R, "m", "--R")
         (start if vary is not None and "R_m" in vary else fix).setdefault("R_m", R)
@@ -226,7 +239,6 @@ def _with_heights(names, args, contact):
 
 def run(args) -> None:
     from ..fit import compare_models, fit_force_separation, fit_friction_load, fit_joint, fit_pull_off, read_data
-    from ..fit.models import MODELS, model_class
     from ._output import comment_header, format_json, write_outputs
 
     units = {k: v for k, v in (("load", args.load_unit), ("friction", args.friction_unit),
@@ -236,15 +248,10 @@ def run(args) -> None:
     if args.compare is not None and args.model is not None:
         raise UsageError("give --model or --compare, not both")
     datasets = [read_data(path, kind=args.kind, units=units, drop_nan=args.drop_nan) for path in args.data]
-    if contact is not None:  # the contact holds the material; the laws in a comparison take it too
-        names = _names(args.compare, "--compare") if args.compare is not None else [args.model or "gw"]
-        if not any(isinstance(n, str) and n.strip().lower() in MODELS and model_class(n.strip().lower()).uses_material
-                   for n in names):
-            opts["material"] = None
     if args.compare is not None:
         if len(datasets) > 1:
             raise UsageError("--compare fits one DATA file")
-        result = compare_models(datasets[0], _with_heights(_names(args.compare, "--compare"), args, contact), **opts)
+        result = compare_models(datasets[0], _with_heights(_model_names(args), args, contact), **opts)
         listed = result.to_list()
         text = format_json(listed if contact is None else {"contact": contact.to_dict(), "results": listed}) \
             if args.format == "json" else result.summary() + "\n" + "\n".join(r.summary() for r in result.results)

@@ -55,18 +55,21 @@ def model_class(key: str) -> type:
     return _gw() if key == "gw" else MODELS[key]
 
 
+def _take(names) -> str:
+    """The phrase naming ``names`` with its verb: model 'x' takes, or models 'x', 'y' take."""
+    return f"model {names[0]!r} takes" if len(names) == 1 else f"models {', '.join(map(repr, names))} take"
+
+
 def material_refusal(*names: str) -> str:
     """The message refusing ``material=`` for the models ``names``, which take none."""
-    which = f"model {names[0]!r} takes" if len(names) == 1 else f"models {', '.join(map(repr, names))} take"
-    return (f"material: {which} no material; only the single-asperity laws (hertz, jkr, dmt, md) "
+    return (f"material: {_take(names)} no material; only the single-asperity laws (hertz, jkr, dmt, md) "
             "do (their E_star_Pa and starts); the physical gw model takes its material from its contact "
             "(contact=PhysicalContact(...); --material with --sigma-s, --R, --eta, --area or --surface)")
 
 
 def contact_refusal(*names: str) -> str:
     """The message refusing ``contact=`` for the models ``names``, which take none."""
-    which = f"model {names[0]!r} takes" if len(names) == 1 else f"models {', '.join(map(repr, names))} take"
-    return (f"contact: {which} no contact; only the rough-surface model gw does (a physical contact: "
+    return (f"contact: {_take(names)} no contact; only the rough-surface model gw does (a physical contact: "
             "--material with --sigma-s, --R, --eta, --area or --surface); the single-asperity laws take "
             "material= and the tip radius R_m")
 
