@@ -294,7 +294,7 @@ def test_jackson_green_law_of_the_dimensionless_gw_fit(capsys, tmp_path):
     assert code == 0, err
     same(out, fit.fit_friction_load(str(path), GWFit(law=JacksonGreen(0.006, 0.5)),
                                     vary=["alpha", "beta", "H_over_E"], ci="wald"))
-    assert strict_json(out)["model"] == "gw (jackson-green)"
+    assert strict_json(out)["model"] == "gw (jackson-green H/E*=0.006 h*/sigma=0.5)"
     for extra, needle in ((["--law", "jackson-green"], "give --hardness H/E*"),
                           (["--law", "jackson-green", "--hardness", "0.01", "--size-effect"],
                            "--size-effect applies only to the rough-surface model with a physical contact"),

@@ -141,7 +141,7 @@ def test_a_plastic_view_fits_alpha_beta_and_the_hardness(tmp_path):
     ref = fit_friction_load(str(path), GWFit(law=JacksonGreen(0.006, 1.0)), vary=PLASTIC_VARY,
                             start={"alpha": 0.04, "beta": 1000.0, "H_over_E": 0.006},
                             fix={"h_star_over_sigma": 1.0, "nu": 0.3, "h_over_b": 1.0}, ci="wald")
-    assert r.model == ref.model == "gw (jackson-green)" and "gamma" not in r.values
+    assert r.model == ref.model == "gw (jackson-green H/E*=0.006 h*/sigma=1)" and "gamma" not in r.values
     for name in PLASTIC_VARY:
         assert r.values[name] == pytest.approx(ref.values[name], rel=1e-9)
         assert name in panel.info.text

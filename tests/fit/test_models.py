@@ -177,7 +177,7 @@ def test_gw_with_the_jackson_green_law_predicts_the_library_and_recovers_the_har
     data = friction_load_data(np.geomspace(1.0, 1e4, 30), np.ones(30))
     specs = gw.specs(data)
     assert "gamma" not in specs and (specs["H_over_E"].value, specs["h_star_over_sigma"].value) == (0.004, 2.0)
-    assert not specs["H_over_E"].vary and gw.name == "gw (jackson-green)"
+    assert not specs["H_over_E"].vary and gw.name == "gw (jackson-green H/E*=0.004 h*/sigma=2)"
     v = {k: s.value for k, s in specs.items()} | {"alpha": 0.05, "beta": 1000.0}
     P = np.geomspace(1.0, 1e4, 30)
     np.testing.assert_allclose(gw.friction(P, v)[0], asperity.Model(0.05, 1000.0, law=law).load_curve(P).F,

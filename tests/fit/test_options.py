@@ -158,6 +158,28 @@ def test_compare_passes_the_material_to_the_laws_only():
         compare_models(LINE, ["cos", "nope"])
 
 
+def test_compare_ranks_plastic_models_of_different_hardness():
+    """Two Jackson-Green models that differ only in their held hardness have different
+    names, so one comparison ranks them: the one holding the generating H/E* first, its
+    chi-square that of its own fit."""
+    from asperity import Model
+    from asperity.elastic_plastic import JacksonGreen
+    from asperity.fit.gw import GWFit
+
+    P = np.geomspace(1.0, 1e4, 25)
+    F = Model(0.05, 1000.0, law=JacksonGreen(0.004)).load_curve(P).F
+    F = F * (1 + 0.01 * np.random.default_rng(5).standard_normal(P.size))
+    data = friction_load_data(P, F)
+    true, wrong = GWFit(law=JacksonGreen(0.004)), GWFit(law=JacksonGreen(0.04))
+    assert true.name != wrong.name
+    table = compare_models(data, [wrong, true], vary=["alpha", "beta"], ci="wald")
+    assert [r.model for r in table.results] == [true.name, wrong.name]
+    alone = fit_friction_load(data, GWFit(law=JacksonGreen(0.004)), vary=["alpha", "beta"], ci="wald")
+    assert table.best.chisqr == pytest.approx(alone.chisqr, rel=1e-12)
+    with pytest.raises(ValueError, match="more than once"):
+        compare_models(data, [GWFit(law=JacksonGreen(0.004)), true])
+
+
 def test_get_model_registry():
     assert get_model("JKR").name == "jkr"
     m = get_model("gw")

@@ -98,7 +98,7 @@ class GWFit(FitModel):
         self.contact = contact
         self.heights = GAUSSIAN if heights is None else check_heights(heights)
         self.law = law if isinstance(law, JacksonGreen) else None
-        named = [] if self.law is None else [self.law.name]
+        named = [] if self.law is None else [_law_label(self.law)]
         if self.heights != GAUSSIAN:
             named.append(f"heights {self.heights.spec or repr(self.heights)}")
         if named:  # the result names the model it fitted
@@ -279,3 +279,12 @@ def _friction(model: Model, P):
     if np.any(ok):
         F[ok] = model.load_curve(P[ok]).F
     return F, int(np.count_nonzero(~ok))
+
+
+def _law_label(law) -> str:
+    """The Jackson-Green law as the fit's model name shows it, its start values included.
+
+    So that two plastic models with different hardness are told apart (in a ranking, say).
+    """
+    label = f"{law.name} H/E*={law.H_over_E:g}"
+    return label + (f" h*/sigma={law.h_star_over_sigma:g}" if law.h_star_over_sigma else "")
