@@ -270,3 +270,19 @@ def test_a_log_parameter_varied_from_zero_says_what_to_give():
     with pytest.raises(ValueError, match="^parameter 'h_star_over_sigma' = 0 cannot be varied from there: it is fitted "
                                          "in log10, so its start must be > 0"):
         fit_friction_load(data, GWFit(law=JacksonGreen(0.01)), vary=["alpha", "h_star_over_sigma"])
+
+
+def test_a_model_outside_its_domain_at_the_start_names_the_held_values():
+    """A hardness held so low that the plastic model cannot be evaluated anywhere near the
+    start: the error says the start (held values) is the cause, names the held parameters
+    and keeps the library's reason; a fit that ends outside the domain from a valid start
+    would instead ask for better starts."""
+    from asperity import Model
+    from asperity.elastic_plastic import JacksonGreen
+    from asperity.fit.gw import GWFit
+
+    P = np.geomspace(1.0, 1e4, 20)
+    data = friction_load_data(P, Model(0.05, 1000.0, law=JacksonGreen(0.004)).load_curve(P).F)
+    with pytest.raises(ValueError, match=r"cannot be evaluated at the start values \(H_over_E = 1e-09.*"
+                                         r"change the held values \(H_over_E, .*\) or the start values$"):
+        fit_friction_load(data, GWFit(law=JacksonGreen(1e-9)), ci="wald")

@@ -109,7 +109,26 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = 
     if restart_note:
         analysis["warnings"].insert(0, restart_note)
     objective_profile = objective.calls - nfev
-    return _result(problem, result, analysis, nfev, objective_profile, lmfit, grid)
+    return _result(problem, result, analysis, nfev, objective_profile, lmfit, grid, problem.values(start))
+
+
+def _unevaluable(problem, term, err, start) -> str:
+    """The message for a fit that ended where ``term``'s model cannot be evaluated.
+
+    If the model cannot be evaluated at the start either, the held values or the start put
+    it outside its domain (say a hardness held too low): the message says so rather than
+    asking for better starts only.
+    """
+    try:
+        with pywarnings.catch_warnings():
+            pywarnings.simplefilter("ignore", AsperityWarning)
+            term.predict(term.local(start))
+    except ValueError as at_start:
+        held = sorted(n for n, p in problem.params.items() if not p.vary and p.expr is None)
+        return (f"model {term.model.name!r} cannot be evaluated at the start values ({at_start}); change the held "
+                f"values ({', '.join(held) or 'none'}) or the start values")
+    return (f"the fit ended where model {term.model.name!r} cannot be evaluated ({err}); give start values "
+            "closer to the data or narrower bounds")
 
 
 #: Restart choices of :func:`run`.
@@ -297,7 +316,7 @@ def _exact(problem, result) -> bool:
     return result.chisqr <= 1e-18 * scale
 
 
-def _result(problem, result, a, nfev, profile_nfev, lmfit, grid) -> FitResult:
+def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitResult:
     values = problem.values(result.params)
     with pywarnings.catch_warnings(record=True) as caught:
         pywarnings.simplefilter("always", AsperityWarning)
@@ -305,8 +324,7 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid) -> FitResult:
             try:
                 term.predict(term.local(values))
             except ValueError as err:
-                raise ValueError(f"the fit ended where model {term.model.name!r} cannot be evaluated ({err}); "
-                                 "give start values closer to the data or narrower bounds") from None
+                raise ValueError(_unevaluable(problem, term, err, start)) from None
     for w in caught:  # warnings of other libraries go on as they came
         if not issubclass(w.category, AsperityWarning):
             pywarnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
