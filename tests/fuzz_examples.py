@@ -355,7 +355,7 @@ SKIP = {
                     "asperity.explorer.compute.friction_law", "asperity.explorer.compute.loads",
                     "asperity.explorer.compute.asperity_law", "asperity.explorer.state.used",
                     "asperity.explorer.compute.model_gamma", "asperity.explorer.fit_panel.fitted_names",
-                    "asperity.explorer.state.material_values",
+                    "asperity.explorer.state.material_values", "asperity.explorer.wording.page_wording",
                     "asperity.explorer.compute.separations", "asperity.explorer.compute.build_subject",
                     "asperity.explorer.compute.load_columns", "asperity.explorer.compute.separation_columns",
                     "asperity.explorer.compute.pull_off_columns", "asperity.explorer.state.fields",

@@ -201,7 +201,8 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
                                                    sigma_s=s.sigma_s, nu=self.material.nu)
         if self.interaction.active and self.gamma > 0:
             raise ValueError(f"interaction {self.interaction.name!r} (Ciavarella, Greenwood & Paggi 2008) is "
-                             "derived for non-adhesive contact; pass adhesion=False or interaction='none'")
+                             "derived for non-adhesive contact; pass adhesion=False or interaction='none' "
+                             "(command line: --no-adhesion)")
         self.law, self.hardness, self.h_star = resolve_plasticity(self.material, plasticity, hardness,
                                                                   size_effect, h_star)
         self.plastic_threshold = check_scalar_positive(plastic_threshold, "plastic_threshold", allow_zero=True)
@@ -211,7 +212,8 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
             if self.gamma > 0.0:
                 raise ValueError(f"plasticity={self.law!r} has no adhesion, but material {self.material.name!r} has "
                                  f"a work of adhesion w = {self.w:g} J/m^2 (Maugis-Dugdale cannot be combined with a "
-                                 "plastic core consistently): pass adhesion=False")
+                                 "plastic core consistently): pass adhesion=False "
+                                 "(command line: --no-adhesion)")
             self._law_spec = LAWS[self.law](self.H_over_E, self.h_star / self.surface.sigma_s)  # validated here
 
     def _friction_law(self, friction) -> FrictionLaw | None:
@@ -392,7 +394,8 @@ def _adhesion_w(body: Material, adhesion: bool) -> float:
         return 0.0
     if body.w is None:
         raise ValueError(f"material {body.name!r} has no work of adhesion w (J/m^2): give it one "
-                         "(dataclasses.replace(material, w=...)) or pass adhesion=False for the Hertz model")
+                         "(dataclasses.replace(material, w=...)) or pass adhesion=False for the Hertz model "
+                         "(command line: --w or --no-adhesion)")
     return body.w
 
 

@@ -180,10 +180,10 @@ def resolve_plasticity(material: Material, plasticity, hardness, size_effect, h_
             raise ValueError(f"size_effect=True (the size effect) needs the Nix-Gao pair H0 and h_star; material "
                              f"{material.name!r} "
                              f"has H0 = {material.H0!r}, h_star = {material.h_star!r}: give hardness= (H0, Pa) "
-                             "and h_star= (m)")
+                             "and h_star= (m) (command line: --hardness, --h-star)")
     if LAWS[name].plastic and H is None:
         raise ValueError(f"plasticity={name!r} needs a hardness: material {material.name!r} has none; "
-                         "give hardness= (Pa)")
+                         "give hardness= (Pa) (command line: --hardness)")
     return name, H, h
 
 
@@ -240,7 +240,8 @@ class ContactPlasticity:
             If the contact has no hardness.
         """
         if self.hardness is None:
-            raise ValueError(f"material {self.material.name!r} has no hardness: give hardness= (Pa)")
+            raise ValueError(f"material {self.material.name!r} has no hardness: give hardness= (Pa) "
+                             "(command line: --hardness)")
         return plasticity_index(self.E_star, self.hardness, self.surface.sigma_s, self.surface.R)
 
     @functools.cached_property

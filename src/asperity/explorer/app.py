@@ -42,6 +42,7 @@ from .state import (
     state_from_query,
     used,
 )
+from .wording import page_wording
 
 __all__ = ["ExplorerSession", "PageState", "make_document", "attempt", "immediate_runner", "threaded_runner",
            "GROUPS"]
@@ -353,7 +354,7 @@ class ExplorerSession:
 
 def _message(err: Exception) -> str:
     if isinstance(err, ValueError | TypeError | ArithmeticError):
-        return str(err) or type(err).__name__
+        return page_wording(str(err)) or type(err).__name__
     return f"unexpected error ({type(err).__name__}: {err}); please report it with the page's address"
 
 

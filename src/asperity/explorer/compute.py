@@ -38,6 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .state import CUSTOM, ELASTIC, MODES, State, distributions
+from .wording import page_wording
 
 __all__ = ["Result", "compute", "height_distribution", "friction_law", "asperity_law", "model_gamma", "loads",
            "separations", "build_subject", "load_columns", "separation_columns", "pull_off_columns"]
@@ -218,7 +219,7 @@ def compute(state: State) -> Result:
             load, separation = subject.load_curve(P), subject.separation_curve(d_bar * subject.surface.sigma_s)
         pull_off = subject.pull_off()
         derived = _derived(state, subject, pull_off)
-    notes = [f"{w.category.__name__}: {w.message}" for w in caught]
+    notes = [f"{w.category.__name__}: {page_wording(str(w.message))}" for w in caught]
     return Result(state, subject, load, separation, pull_off, tuple(derived), tuple(dict.fromkeys(notes)))
 
 
