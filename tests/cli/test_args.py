@@ -122,6 +122,19 @@ def test_join_negative_lists():
     assert join_negative_lists(["--d", "-1,0", "--x", "-.5", "-o", "-1"]) == ["--d=-1,0", "--x=-.5", "-o", "-1"]
     assert join_negative_lists(["--d=-1", "--nu", "-0.2"]) == ["--d=-1", "--nu=-0.2"]
     assert join_negative_lists(["--plot", "-x.png"]) == ["--plot", "-x.png"]
+    assert join_negative_lists(["--w", "-inf", "--E", "-NaN", "--h", "-Infinity"]) == [
+        "--w=-inf", "--E=-NaN", "--h=-Infinity"]
+    assert join_negative_lists(["--plot", "-info.png"]) == ["--plot=-info.png"]  # a value either way
+
+
+def test_a_negative_infinity_is_refused_by_its_option(capsys):
+    """``--profile-budget -inf`` reaches the option's own check (one line naming it), not
+    argparse's 'expected one argument'."""
+    from asperity.cli import main
+
+    assert main(["load", "--P", "1", "--alpha", "0.1", "--beta", "1000", "--gamma", "-inf"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "gamma" in err and "expected one argument" not in err
 
 
 @pytest.mark.parametrize("argv, needle", [

@@ -167,12 +167,18 @@ def quantity_list(text: str, unit: str, *, log: bool, name: str):
 
 
 def join_negative_lists(argv):
-    """``--d -1,0,2`` -> ``--d=-1,0,2``: argparse would take ``-1,0,2`` for an option."""
+    """``--d -1,0,2`` -> ``--d=-1,0,2``: argparse would take ``-1,0,2`` (or ``-inf``) for an option.
+
+    A value is a word that starts with a minus sign and then a digit, a point, ``inf`` or
+    ``nan`` (any case): it is joined to the option before it, which then receives it (and
+    checks it: ``--profile-budget -inf`` is refused by name, not as a missing argument).
+    """
     out = list(argv)
     i = 0
     while i < len(out) - 1:
         nxt = out[i + 1]
-        if out[i].startswith("--") and "=" not in out[i] and nxt[:1] == "-" and nxt[1:2] in tuple("0123456789."):
+        number = nxt[1:2] in tuple("0123456789.") or nxt[1:4].lower() in ("inf", "nan")
+        if out[i].startswith("--") and "=" not in out[i] and nxt[:1] == "-" and number:
             out[i:i + 2] = [f"{out[i]}={nxt}"]
         i += 1
     return out
