@@ -224,8 +224,12 @@ class HeightSums:
         self._panel_w = self.weights[mask].reshape(left.size, n, 4)
         self._unit = unit
 
-    def direct(self, d):
-        """The four integrals at separations ``d`` (1-D, a narrow range), accurately: shape (n, 4)."""
+    def direct(self, d, edges: bool = True):
+        """The four integrals at separations ``d`` (1-D, a narrow range), accurately: shape (n, 4).
+
+        ``edges=False`` leaves out the correction at the edges of the heights' support (which
+        :meth:`_prepare` then adds for all its batches at once: per separation, the same).
+        """
         if self._kernel is not None:  # sum of the kernel's integrals, shifted
             w, c = self._translates
             G = self._kernel.sums((d[:, None] - c[None, :]).ravel())[0].reshape(d.size, c.size, 4)
@@ -237,7 +241,7 @@ class HeightSums:
         a, b = np.searchsorted(self._centers, [lo - self._unit, hi + self._unit])
         if b > a:
             S = S + h.panel_sums(d, self._centers[a:b], self._offsets, self._panel_w[a:b], 0)[0]
-        if self._edges_of_support:
+        if edges and self._edges_of_support:
             S = S + self._edge_correction(d)
         return S
 
@@ -342,8 +346,9 @@ class HeightSums:
         if todo.size == 0:
             return
         narrow = (E[todo + 1] - E[todo]) < 0.25 * self._W
+        jobs = []  # (batch, points, separations, integrals without the support-edge correction)
         for group, n in ((todo[~narrow], CHEBYSHEV_POINTS), (todo[narrow], GRADED_POINTS)):
-            xc, T, D = _chebyshev(n)
+            xc = _chebyshev(n)[0]
             i = 0
             while i < group.size:
                 j = i + 1
@@ -352,16 +357,24 @@ class HeightSums:
                 batch = group[i:j]
                 a, b = E[batch], E[batch + 1]
                 dn = (0.5 * (a + b)[:, None] + 0.5 * (b - a)[:, None] * xc).ravel()
-                S = self.direct(dn)
-                Q = self.heights.sf(dn + self.law.u_end)
-                R = (S / np.where(Q > 0, Q, 1.0)[:, None]).reshape(batch.size, n, 4)
-                c0 = T @ R  # (batch, n, 4)
-                scale = (2.0 / (b - a))[:, None, None]
-                c1 = scale * (D @ c0)
-                for C, c in zip(self._C, (c0, c1, scale * (D @ c1)), strict=True):
-                    C[batch, :n] = c  # coefficients beyond n stay zero
-                state[batch] = 1
+                jobs.append((batch, n, dn, self.direct(dn, edges=False)))
                 i = j
+        if self._edges_of_support and self._kernel is None and jobs:  # one call for every batch
+            fix = self._edge_correction(np.concatenate([job[2] for job in jobs]))
+            if not np.isscalar(fix):
+                ends = np.cumsum([job[2].size for job in jobs])[:-1]
+                jobs = [(bt, n, dn, S + part) for (bt, n, dn, S), part in zip(jobs, np.split(fix, ends), strict=True)]
+        for batch, n, dn, S in jobs:
+            _, T, D = _chebyshev(n)
+            a, b = E[batch], E[batch + 1]
+            Q = self.heights.sf(dn + self.law.u_end)
+            R = (S / np.where(Q > 0, Q, 1.0)[:, None]).reshape(batch.size, n, 4)
+            c0 = T @ R  # (batch, n, 4)
+            scale = (2.0 / (b - a))[:, None, None]
+            c1 = scale * (D @ c0)
+            for C, c in zip(self._C, (c0, c1, scale * (D @ c1)), strict=True):
+                C[batch, :n] = c  # coefficients beyond n stay zero
+            state[batch] = 1
 
     def sums(self, d, order: int = 0):
         """``[S_0, .., S_order]``: the four integrals (columns) and their d-derivatives, as Tabulation.sums."""
