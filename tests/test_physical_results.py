@@ -111,3 +111,21 @@ def test_pull_off_without_adhesion_has_no_area():
     assert not po.exists and po.area == 0.0
     assert po.to_dict()["d_m"] is None
     json.dumps(po.to_dict(), allow_nan=False)
+
+
+def test_the_above_100_percent_message_names_the_load_where_100_percent_is_passed():
+    """Found by a review: the message said 'above 100 % from P = 0.1 N' where the area was
+    12 % of the nominal; it must name the first load past 100 %, read off the curve."""
+    contact = PhysicalContact("Au", Surface("2nm", "1um", "1e12/m^2", "1e-10m^2"), adhesion=False)
+    P = [1e-2, 1e-1, 0.3, 1.0, 10.0]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        curve = contact.load_curve(P)
+    fraction = np.asarray(curve.area_fraction)
+    first = P[int(np.argmax(fraction > 1.0))]
+    assert fraction.max() > 1.0 and fraction[1] < 1.0
+    (message,) = curve.validity_warnings()
+    assert f"above 100 % from P = {first:.4g} N" in message
+    below = contact.load_curve(P[:3])
+    first10 = P[int(np.argmax(np.asarray(below.area_fraction) > 0.1))]
+    assert f"above 10 % from P = {first10:.4g} N" in below.validity_warnings()[0]

@@ -172,9 +172,11 @@ class PhysicalCurve:
         limit = check_scalar_positive(limit, "limit")
         fraction = np.asarray(self.area_fraction, dtype=float)
         with np.errstate(invalid="ignore"):
-            over = fraction > limit
-        if not over.any():
-            return []
+            if not (fraction > limit).any():
+                return []
+            # the message names the limit passed: 100 % once the nominal area is exceeded
+            passed = max(limit, AREA_FRACTION_LIMIT) if np.nanmax(fraction) > AREA_FRACTION_LIMIT else limit
+            over = fraction > passed
         where = f" from P = {float(np.min(np.asarray(self.P)[over])):.4g} N"
         return [_area_fraction_message(float(np.nanmax(fraction)), limit, where)]
 
