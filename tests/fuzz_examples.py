@@ -336,7 +336,8 @@ SKIP = {
                     "asperity.icha.solver.IchaState", "asperity.icha.contact.icha_curve")},
     **{name: "a step of validate_surface (fuzzed), called with the surface, loads and models it checked"
        for name in ("asperity.validation.models.model_columns", "asperity.validation.models.run_icha",
-                    "asperity.validation.models.run_slope_law")},
+                    "asperity.validation.models.run_slope_law", "asperity.validation.notes.comparison_notes",
+                    "asperity.validation.notes.model_warning_notes")},
     **{name: "a step of the fitting engine's restarts, called by fit_problem on its own results"
        for name in ("asperity.fit.runner.suspicious", "asperity.fit.runner.restart_points")},
     "asperity.fit.engine.parameter_names": "checks vary/shared for the fitting engine (its callers are fuzzed)",

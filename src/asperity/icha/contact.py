@@ -21,11 +21,15 @@ from .field import FreeKernel, PeriodicKernel, boussinesq_rectangle_mean
 from .solver import IchaState
 from .summits import MapSummits, map_summits
 
-__all__ = ["IchaCurve", "icha_contact", "icha_curve", "MAX_SUMMITS", "MAX_LOADS", "P_BAR_RANGE"]
+__all__ = ["IchaCurve", "icha_contact", "icha_curve", "MAX_SUMMITS", "MAX_LOADS", "P_BAR_RANGE", "ELONGATED_RATIO"]
 
 #: Most summits on one map: the model keeps two summits x summits matrices (distances and
 #: point-force fields, 8 N^2 bytes each: 256 MB at the limit).
 MAX_SUMMITS = 4000
+#: A summit whose principal curvatures differ more than this many times is elongated (a ridge):
+#: the Hertz cap of the equivalent sphere overstates its contact area (Johnson 1985, section 4.2:
+#: the elliptic correction factors, taken as 1, are no longer near 1).
+ELONGATED_RATIO = 10.0
 #: Most loads in one run.
 MAX_LOADS = 1000
 #: Range of the mean pressure over the contact modulus, :math:`P/(E^*A_0)`: above 1 the strains are
@@ -69,6 +73,10 @@ class IchaCurve:
         Whether the contacts interact elastically and coalesce.
     setup_seconds : float
         Wall time of finding the summits and tabulating the periodic field [s].
+    elongated : float
+        Share of the summits whose principal curvatures differ more than
+        :data:`ELONGATED_RATIO`-fold (ridges: their equivalent-sphere caps overstate the
+        contact area); NaN if the summits' curvatures are not known.
     """
 
     P: np.ndarray
@@ -86,6 +94,7 @@ class IchaCurve:
     interaction: bool = True
     coalescence: bool = True
     setup_seconds: float = 0.0
+    elongated: float = math.nan
     parameters: dict = field(default_factory=dict, compare=False)
 
     def __len__(self) -> int:
@@ -214,7 +223,7 @@ def icha_curve(summits, P, *, E_star, interaction=True, coalescence=True) -> Ich
                      separation=out["sep"], merges=out["merges"].astype(int), force_sum=out["force"],
                      seconds=out["sec"], n_summits=len(summits), nominal_area=A0, periodic=summits.periodic,
                      E_star=E_star, interaction=bool(interaction), coalescence=bool(coalescence),
-                     setup_seconds=setup,
+                     setup_seconds=setup, elongated=_elongated(summits),
                      parameters={"E_star_Pa": E_star, "periodic": summits.periodic, "n_summits": len(summits),
                                  "interaction": bool(interaction), "coalescence": bool(coalescence),
                                  "radius": summits.radius, "nominal_area_m2": A0})
@@ -288,3 +297,11 @@ def icha_contact(topography, P, *, E_star, periodic=None, radius="geometric", in
     found = time.perf_counter() - start
     curve = icha_curve(summits, P, E_star=E_star, interaction=interaction, coalescence=coalescence)
     return dataclasses.replace(curve, setup_seconds=curve.setup_seconds + found)
+
+
+def _elongated(summits: MapSummits) -> float:
+    """Share of the summits past :data:`ELONGATED_RATIO` (NaN without their curvature ratios)."""
+    ratio = summits.curvature_ratio
+    if ratio is None or ratio.size == 0:
+        return math.nan
+    return float(np.mean(ratio > ELONGATED_RATIO))

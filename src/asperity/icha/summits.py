@@ -61,6 +61,9 @@ class MapSummits:
         Sides of the map :math:`L_x, L_y` [m].
     periodic : bool
         Whether the map repeats (neighbours and distances wrap around).
+    curvature_ratio : ndarray or None
+        Larger over smaller principal curvature of each summit, >= 1 (``inf`` where the
+        smaller is not positive: a ridge or saddle-like grid maximum); None if not computed.
     """
 
     x: np.ndarray
@@ -70,6 +73,7 @@ class MapSummits:
     size: tuple[float, float]
     periodic: bool
     radius: str = "geometric"
+    curvature_ratio: np.ndarray | None = None
 
     def __len__(self) -> int:
         return int(self.z.size)
@@ -159,8 +163,11 @@ def map_summits(heights, pixel_size, *, periodic: bool, radius: str = "geometric
         R = 1.0 / mean
     else:
         R = np.where(gauss > 0, 1.0 / np.sqrt(np.where(gauss > 0, gauss, 1.0)), 1.0 / mean)
+    half_gap = np.sqrt(((hxx - hyy) / 2) ** 2 + hxy**2)  # principal curvatures: mean +- half_gap
+    low = mean - half_gap
+    ratio = np.where(low > 0, (mean + half_gap) / np.where(low > 0, low, 1.0), np.inf)
     return MapSummits(x=i * dx, y=j * dy, z=h[i, j], R=R, size=(nx * dx, ny * dy), periodic=bool(periodic),
-                      radius=radius)
+                      radius=radius, curvature_ratio=ratio)
 
 
 def _second_derivatives(padded, i, j, dx, dy):

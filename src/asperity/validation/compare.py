@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 import os
 import time
+import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -42,12 +43,14 @@ import numpy as np
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._json import dumps
 from ..materials import as_material
+from ..persson import rms_slope
 from ..physical import PhysicalContact
 from ..quantities import VALIDATION_COLUMNS
 from ..topography import analyse_surface, read_topography
 from ..topography.summits import plain
 from .bem import DEFAULT_TOLERANCE, BemCurve, bem_contact, subsample
 from .models import AREA_METHODS, check_models, model_columns, run_icha, run_slope_law
+from .notes import comparison_notes, model_warning_notes
 from .plot import plot_validation
 
 __all__ = ["SurfaceValidation", "validate_surface", "METHODS"]
@@ -77,7 +80,9 @@ class SurfaceValidation:
         ``model`` (the statistical curves, both methods), ``model_per_method``; ``icha``
         (summits, field and loads), ``persson``, ``bgt`` (rms slope and law).
     parameters : dict
-        Material, E*, grid, sizes, periodicity, source file, models.
+        Material, E*, grid, sizes, periodicity, source file, models; ``warnings``: notes
+        (the summit analysis's doubts, the GW curves' warnings naming the summit method, and
+        :func:`~asperity.validation.notes.comparison_notes`), not issued as Python warnings.
     models : tuple of str
         The models compared (:data:`asperity.validation.models.MODELS`).
     icha : IchaCurve or None
@@ -248,12 +253,16 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
              "iterations_bem": bem.iterations}
     costs = {"bem": float(np.sum(bem.seconds))}
     icha = None
+    notes = list(analysis.warnings) if analysis else []
     if "gw" in models:
         curves, t_model = {}, {}
         for method in METHODS:
-            start = time.perf_counter()
-            curves[method] = contacts[method].load_curve(bem.P)
-            t_model[method] = time.perf_counter() - start
+            with warnings.catch_warnings(record=True) as caught:  # -> notes naming the method
+                warnings.simplefilter("always")
+                start = time.perf_counter()
+                curves[method] = contacts[method].load_curve(bem.P)
+                t_model[method] = time.perf_counter() - start
+            notes += model_warning_notes(method, caught)
         table.update(_gw_table(bem, analysis, contacts, curves))
         costs.update({"analysis": t_analysis, "model": sum(t_model.values()), "model_per_method": t_model})
     if "icha" in models:
@@ -264,11 +273,14 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
         if name in models:
             cols, costs[name], slopes[name] = run_slope_law(name, topo, bem.P, mat.E_star, A0, bem.area)
             table.update(cols)
+    methods = tuple(m for model in models for m in AREA_METHODS[model])
+    notes += comparison_notes(table, methods, A0, elongated=None if icha is None else icha.elongated,
+                              rms_slope=next(iter(slopes.values())) if slopes else _slope(topo))
     params = {"material": mat.name, "E_star_Pa": mat.E_star, "nb_grid_pts": bem.nb_grid_pts,
               "physical_sizes_m": tuple(float(s) for s in topo.physical_sizes), "nominal_area_m2": A0,
               "periodic": bem.periodic, "grid": grid, "source": source, "models": list(models),
               "interaction": contacts[METHODS[0]].interaction.name if contacts else "none",
-              "tolerance": tolerance, "warnings": list(analysis.warnings) if analysis else []}
+              "tolerance": tolerance, "warnings": notes}
     if slopes:
         params["rms_slope"] = next(iter(slopes.values()))
     if icha is not None:
@@ -290,3 +302,11 @@ def _gw_table(bem, analysis, contacts, curves) -> dict[str, np.ndarray]:
         t[f"sep_{method}_m"] = curves[method].d + summits.mean_summit_height
         t[f"contacts_{method}"] = curves[method].contacts
     return t
+
+
+def _slope(topo):
+    """The map's rms slope for the notes (None if it cannot be had: the notes then say nothing of it)."""
+    try:
+        return rms_slope(topo)
+    except ValueError:
+        return None
