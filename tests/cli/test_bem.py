@@ -121,3 +121,48 @@ def test_unreadable_surface(capsys, tmp_path):
     assert one_line_error(code, err, "bad.txt")
     code, _, err = run(capsys, "bem", str(tmp_path / "missing.npy"), *ARGS, "--load", "1mN")
     assert one_line_error(code, err, "no such file")
+
+
+def test_repeated_model_tolerance_and_maxiter_equal_api(capsys, scan):
+    """``--model gw --model icha`` is ``--model gw,icha`` (found by a review: the last one
+    won); ``--tolerance`` and ``--maxiter`` reach the solver as in the API."""
+    loads = [1e-3, 3e-3]
+    code, out, err = run(capsys, "bem", str(scan), *ARGS, "--load", "1mN,3mN", "--model", "gw", "--model", "icha",
+                         "--tolerance", "1e-6", "--maxiter", "500", "--format", "json")
+    assert code == 0, err
+    got = strict_json(out)
+    expected = api(scan, loads, models=("gw", "icha"), tolerance=1e-6, maxiter=500)
+    assert got["models"] == ["gw", "icha"] and got["parameters"]["tolerance"] == 1e-6
+    for name in ("area_bem_m2", "iterations_bem", "area_icha_m2", "area_spectral_m2"):
+        np.testing.assert_allclose(got["table"][name], expected.columns()[name], rtol=1e-12)
+    code, _, err = run(capsys, "bem", str(scan), *ARGS, "--load", "1mN", "--maxiter", "2")
+    assert one_line_error(code, err, "(command line: --maxiter, --tolerance, --grid)"), err
+
+
+def test_bodies_without_a_common_burgers_vector_use_the_nominal_one(capsys, scan):
+    """Found by a review: Au/Si and mica were refused for lack of a Burgers vector the
+    comparison does not depend on; now the nominal one is used, with a note, and the areas
+    equal the API's with that b."""
+    from asperity.materials import material, pair
+    from asperity.validation.compare import NOMINAL_B
+
+    argv = ["--size", "4um,4um", "--unit", "nm", "--quiet", "--load", "1mN", "--format", "json"]
+    code, out, err = run(capsys, "bem", str(scan), *argv, "--material", "Au/Si")
+    assert code == 0, err
+    assert "different Burgers vectors: the GW model uses b = 2.5e-10 m" in err
+    expected = validate_surface(scan, [1e-3], material=pair(material("Au"), material("Si"), b=NOMINAL_B),
+                                physical_sizes=(4e-6, 4e-6), unit="nm")
+    np.testing.assert_allclose(strict_json(out)["table"]["area_spectral_m2"],
+                               expected.columns()["area_spectral_m2"], rtol=1e-12)
+    code, out, err = run(capsys, "bem", str(scan), *argv, "--material", "mica")
+    assert code == 0 and "material 'mica' has no Burgers vector b: the GW model uses b = 2.5e-10 m" in err
+    code, _, err = run(capsys, "bem", str(scan), *argv, "--material", "Au/Si", "--E2", "-1GPa")
+    assert one_line_error(code, err, "E2"), err  # another fault is still named
+
+
+def test_the_helps_choices_and_default_are_the_librarys():
+    from asperity.cli import bem
+    from asperity.interaction import interaction_names
+    from asperity.validation.bem import DEFAULT_TOLERANCE
+
+    assert bem.INTERACTIONS == tuple(interaction_names()) and bem.DEFAULT_TOLERANCE == DEFAULT_TOLERANCE

@@ -105,6 +105,7 @@ def valid_values(tmp: str) -> dict[str, list[str]]:
         "friction_unit": ["nN"], "separation_unit": ["nm"], "drop_nan": [None],
         # bem
         "grid": ["16", "24"], "periodic": [None], "interaction": ["none", "cgp2008"], "quiet": [None],
+        "tolerance": ["1e-4", "1e-5"], "maxiter": ["10000", "5000"],
         # sweep and plot
         "out": [os.path.join(tmp, "sweep.nc")], "resume": [None], "scheduler": ["serial"],
         "chunk_sets": ["1", "64"], "progress": [None], "store": [f["store"]], "x": ["alpha", "gamma"],

@@ -163,6 +163,9 @@ def test_heat_map_axes_and_colour_bar(sweep_file, tmp_path):
     (["--x", "alpha", "--y", "gamma", "--z", "mu"], "fix it with --at P=VALUE"),
     (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P"], "NAME=VALUE"),
     (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "Q=1"], "not another dimension"),
+    (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=nan"], "P must be a finite number"),
+    (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=inf"], "P must be a finite number"),
+    (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=1", "--at", "P=10"], "P given twice"),
 ])
 def test_heat_map_errors(capsys, tmp_path, sweep_file, argv, needle):
     pytest.importorskip("matplotlib")
@@ -207,3 +210,45 @@ def test_heat_map_cells_are_centred_on_log_axes():
     np.testing.assert_allclose(edges, [10 ** -3.5, 10 ** -2.5, 10 ** -1.5, 10 ** -0.5], rtol=1e-12)
     np.testing.assert_allclose(_edges(np.array([0.0, 1.0, 3.0]), False), [-0.5, 0.5, 2.0, 4.0])
     assert np.all(_edges(np.geomspace(1e-5, 1e-2, 5), True) > 0)
+
+
+def test_heat_map_names_the_grid_value_it_draws(capsys, tmp_path, sweep_file):
+    """Found by a review: ``--at P=9`` silently drew P = 10; now a note says so (and an exact
+    grid value draws without one)."""
+    pytest.importorskip("matplotlib")
+    path = tmp_path / "x.png"
+    code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=9",
+                       "-o", str(path))
+    assert code == 0 and err.strip() == ("asperity: note: --at P=9: the sweep has no P = 9; its nearest grid value, "
+                                         "10, is drawn")
+    code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=10",
+                       "-o", str(path))
+    assert code == 0 and err == ""
+
+
+def test_heat_map_never_replaces_its_sweep_nor_writes_a_file_named_dash(capsys, tmp_path, sweep_file, monkeypatch):
+    pytest.importorskip("matplotlib")
+    before = sweep_file.read_bytes()
+    code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "pull_off",
+                       "-o", str(sweep_file))
+    assert one_line_error(code, err, "is the sweep being read") and sweep_file.read_bytes() == before
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "pull_off", "-o", "-")
+    assert one_line_error(code, err, "cannot go to standard output") and not list(tmp_path.iterdir())
+
+
+def test_dash_output_is_standard_output_and_an_input_is_never_overwritten(capsys, tmp_path, monkeypatch):
+    """``-o -`` writes to standard output (found by a review: it made a file named '-'); an
+    output naming the command's input file is refused before anything is written."""
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run(capsys, "load", *MODEL, "--P", "1", "--format", "csv", "-o", "-")
+    code2, out2, _ = run(capsys, "load", *MODEL, "--P", "1", "--format", "csv")
+    assert code == code2 == 0 and out == out2 and not list(tmp_path.iterdir())
+    data = tmp_path / "fl.csv"
+    data.write_text("P,F\n" + "".join(f"{p},{0.3 * p + 1}\n" for p in range(1, 9)))
+    before = data.read_bytes()
+    for option in ("-o", "--plot"):
+        target = str(data) if option == "-o" else str(data)
+        code, _, err = run(capsys, "fit", str(data), "--model", "amontons", option, target)
+        assert one_line_error(code, err, "is the input file"), err
+        assert data.read_bytes() == before

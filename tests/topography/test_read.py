@@ -8,6 +8,7 @@ import numpy as np
 import pint
 import pytest
 
+import asperity
 from asperity.topography import analyse_surface, read_topography
 
 from .synthetic import DX, ST, synthetic_map
@@ -104,8 +105,16 @@ def test_undefined_data(tmp_path, small_map):
     np.savetxt(path, holes.T, header="Width: 1.2 um\nHeight: 1.0 um\nValue units: nm")
     with pytest.raises(ValueError, match=re.escape(str(path)) + ".*1 of 120 heights are undefined"):
         read_topography(path)
-    filled = read_topography(path, fill_undefined=True)
+    with pytest.warns(asperity.AsperityWarning, match=re.escape(str(path)) + r": 1 of 120 heights \(0.833 %\) were "
+                      "undefined and are filled by harmonic interpolation"):
+        filled = read_topography(path, fill_undefined=True)
     assert not filled.has_undefined_data
+    with pytest.raises(TypeError, match="fill_undefined must be True or False"):
+        read_topography(path, fill_undefined="no")
+    every = tmp_path / "none.txt"
+    np.savetxt(every, np.full_like(holes.T, np.nan), header="Width: 1.2 um\nHeight: 1.0 um\nValue units: nm")
+    with pytest.raises(ValueError, match="every height is undefined"):
+        read_topography(every, fill_undefined=True)
     # harmonic fill of one hole on a square grid: the mean of its 4 neighbours
     neighbours = heights[3, 5] + heights[5, 5] + heights[4, 4] + heights[4, 6]
     assert filled.heights()[4, 5] == pytest.approx(neighbours / 4 * 1e-9, rel=1e-6)

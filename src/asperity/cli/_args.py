@@ -254,8 +254,9 @@ def add_body_arguments(parser: argparse.ArgumentParser, *, adhesion: bool = True
     :func:`add_contact_arguments` adds them with the surface; a command whose surface is its
     own (``asperity bem``, a non-adhesive comparison) adds them alone, without adhesion.
     """
+    forms = MATERIAL_FORMS if adhesion else MATERIAL_FORMS.replace("--b, --w, --h or --sigma0", "--b")
     b = parser.add_argument_group("physical contact: the bodies (quantities with units, e.g. 70GPa, 0.25nm, "
-                                  "0.1J/m^2)", _paragraph(MATERIAL_FORMS))
+                                  "0.1J/m^2)", _paragraph(forms))
     b.add_argument("--material", metavar="NAME",
                    help="table name: 'Au' (on a rigid flat), 'Au/Au' (two bodies), 'A/B'")
     b.add_argument("--E", metavar="STRESS", help=_help("E", " of the (first) body, e.g. 70GPa"))
@@ -305,7 +306,7 @@ def add_output_arguments(parser: argparse.ArgumentParser, plot: bool = True) -> 
     g.add_argument("--format", choices=("table", "csv", "json"), default=None,
                    help="output format (default: table on a terminal, csv otherwise)")
     g.add_argument("-o", "--output", metavar="FILE", type=output_file,
-                   help="write to FILE instead of standard output")
+                   help="write to FILE instead of standard output ('-': standard output)")
     if plot:
         g.add_argument("--plot", metavar="FILE.png", type=output_file,
                        help="also draw the curve to a PNG (needs matplotlib)")

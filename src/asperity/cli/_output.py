@@ -27,6 +27,7 @@ import sys
 from .._atomic import atomic_path
 from .._csv import rows_to_csv
 from .._json import dumps
+from .._validation_files import IMAGE_FORMATS
 from ._args import UsageError
 
 __all__ = ["output_format", "format_rows", "format_json", "format_physical", "comment_header", "curve_rows",
@@ -105,6 +106,21 @@ def _target(path: str, what: str):
         raise UsageError(f"cannot write {what} {path!r}: {exc.strerror or exc}") from None
 
 
+def _not_an_input(args, targets) -> None:
+    """Refuse an output path that names one of the command's input files (it would be replaced)."""
+    inputs = []
+    for name in ("file", "data", "store", "surface"):
+        value = getattr(args, name, None)
+        inputs += [v for v in (value if isinstance(value, list) else [value]) if isinstance(v, str)]
+    for option, path in targets:
+        if not path or not os.path.exists(path):
+            continue
+        for source in inputs:
+            if os.path.exists(source) and os.path.samefile(path, source):
+                raise UsageError(f"{option} {path!r} is the input file {source!r}: it would be replaced; give "
+                                 "another name")
+
+
 def write_outputs(text: str, args, plot=None) -> None:
     """Write ``text`` to ``args.output`` (or standard output) and the figure to ``args.plot``.
 
@@ -122,12 +138,17 @@ def write_outputs(text: str, args, plot=None) -> None:
     everything succeeded.
     """
     plot_path = getattr(args, "plot", None)
+    output = None if args.output == "-" else args.output  # '-': standard output, as usual
+    _not_an_input(args, (("-o", output), ("--plot", plot_path)))
+    if plot is not None and plot_path and image_format(plot_path) not in IMAGE_FORMATS:
+        raise UsageError(f"--plot {plot_path!r}: {image_format(plot_path)!r} is not an image format; give a file "
+                         f"name ending in .{', .'.join(IMAGE_FORMATS)}")
     with contextlib.ExitStack() as stack:
         if plot is not None and plot_path:
             tmp = stack.enter_context(_target(plot_path, "plot"))
             plot(tmp, image_format(plot_path))
-        if args.output:
-            tmp = stack.enter_context(_target(args.output, "output file"))
+        if output:
+            tmp = stack.enter_context(_target(output, "output file"))
             with open(tmp, "w", encoding="utf-8") as fh:
                 fh.write(text)
         else:

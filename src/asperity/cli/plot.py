@@ -10,7 +10,11 @@ the variable's meaning and units from the file's attributes.
 from __future__ import annotations
 
 import argparse
+import math
+import os
+import warnings
 
+from .._warnings import AsperityWarning
 from ._args import UsageError, output_file
 
 NAME = "plot"
@@ -36,12 +40,19 @@ def _at(items) -> dict[str, float]:
     out = {}
     for item in items:
         name, sep, value = item.partition("=")
+        name = name.strip()
         try:
-            out[name.strip()] = float(value)
+            number = float(value)
         except ValueError:
             sep = ""
-        if not sep or not name.strip():
+        if not sep or not name:
             raise UsageError(f"--at: expected NAME=VALUE with a number, got {item!r}")
+        if not math.isfinite(number):
+            raise UsageError(f"--at: {name} must be a finite number (a value of the sweep's grid), got {value!r}")
+        if name in out:
+            raise UsageError(f"--at: {name} given twice ({out[name]:g} and {number:g}); a map fixes each dimension "
+                             "once")
+        out[name] = number
     return out
 
 
@@ -74,6 +85,11 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
         if name not in var.dims or name in (x, y):
             raise UsageError(f"--at: {name!r} is not another dimension of {z} ({', '.join(var.dims)})")
     var = var.sel({k: v for k, v in at.items()}, method="nearest")
+    for name, wanted in at.items():  # the nearest grid value: say so when it is not the one asked for
+        got = float(var[name].values)
+        if not math.isclose(got, wanted, rel_tol=1e-9, abs_tol=1e-300):
+            warnings.warn(f"--at {name}={wanted:g}: the sweep has no {name} = {wanted:g}; its nearest grid value, "
+                          f"{got:g}, is drawn", AsperityWarning, stacklevel=2)
     left = [d for d in var.dims if d not in (x, y)]
     if left:
         raise UsageError(f"{z} also varies along {', '.join(left)}: fix it with --at "
@@ -142,8 +158,6 @@ def _edges(values, log: bool):
 
 
 def run(args) -> None:
-    import os
-
     from .._atomic import atomic_path
     from .._optional import require
     from ._output import image_format
@@ -162,7 +176,11 @@ def run(args) -> None:
         if args.z not in ds.data_vars or args.z in ("message", "chunk_done"):  # before the default output file
             raise UsageError(f"--z: {args.z!r} is not a variable of the sweep; it has "
                              f"{', '.join(v for v in ds.data_vars if v not in ('message', 'chunk_done'))}")
+        if args.output == "-":
+            raise UsageError("-o -: an image cannot go to standard output; give a file name")
         path = args.output or f"{args.z}.png"
+        if os.path.exists(path) and os.path.samefile(path, args.store):
+            raise UsageError(f"-o {path!r} is the sweep being read: give another name")
         fmt = image_format(path)
         with atomic_path(path) as tmp:
             heat_map(ds, args.x, args.y, args.z, at, tmp, fmt)

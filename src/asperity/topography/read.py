@@ -36,6 +36,7 @@ import numpy as np
 
 from .._optional import require
 from .._validation import as_float_array
+from .._warnings import AsperityWarning
 from ..units import to_si
 from .summits import MIN_POINTS
 
@@ -70,7 +71,8 @@ def read_topography(path, *, physical_sizes=None, unit=None, channel_index=None,
         Data channel to read (default: the file's default channel).
     fill_undefined : bool, optional
         Undefined (NaN/masked) heights raise :class:`ValueError` unless True, in which
-        case they are filled by harmonic interpolation.  Default False.
+        case they are filled by harmonic interpolation, with an
+        :class:`~asperity.AsperityWarning` saying how many.  Default False.
 
     Returns
     -------
@@ -103,6 +105,9 @@ def read_topography(path, *, physical_sizes=None, unit=None, channel_index=None,
     (5e-06, 5e-06)
     """
     name = _file_name(path)
+    if not isinstance(fill_undefined, bool | np.bool_):
+        raise TypeError(f"fill_undefined must be True or False, got {type(fill_undefined).__name__} "
+                        f"{fill_undefined!r}")
     st = _surface_topography()
     unit = _height_unit(name, unit)
     fmt = _check_npy(name) if _is_npy(name) else None
@@ -213,7 +218,8 @@ def _channel(name, reader, channel_index):
 def _reason(err) -> str:
     """One line describing a SurfaceTopography read error."""
     if type(err).__name__ == "CannotDetectFileFormat":
-        return "no SurfaceTopography reader recognises the format"
+        return ("no SurfaceTopography reader recognises the format (a matrix of numbers is read as "
+                "whitespace-separated text or .npy; a comma-separated one is not)")
     lines = [line.strip() for line in str(err).splitlines() if line.strip()]
     return f"{type(err).__name__}: {lines[0]}" if lines else type(err).__name__
 
@@ -228,16 +234,19 @@ def _check_metadata(name, channel, physical_sizes, unit):
                          f"{MIN_POINTS} along every axis")
     if channel.physical_sizes is None and physical_sizes is None:
         raise ValueError(f"{name}: the file does not store the scan size; pass physical_sizes=(Lx, Ly) for a map "
-                         f"or (L,) for a line scan, in metres or with units (e.g. ('5um', '5um'))")
+                         f"or (L,) for a line scan, in metres or with units (e.g. ('5um', '5um')) "
+                         f"(command line: --size)")
     if channel.unit is None and unit is None:
-        raise ValueError(f"{name}: the file does not store the unit of its heights; pass unit='m', 'um' or 'nm'")
+        raise ValueError(f"{name}: the file does not store the unit of its heights; pass unit='m', 'um' or 'nm' "
+                         "(command line: --unit)")
     if channel.physical_sizes is not None and physical_sizes is not None:
         stored = ", ".join(f"{float(size):g}" for size in channel.physical_sizes)
         in_unit = f" {channel.unit}" if channel.unit else " (in the unit of its heights)"
         raise ValueError(f"{name}: the file already stores the scan size ({stored}){in_unit}; "
-                         f"do not pass physical_sizes")
+                         f"do not pass physical_sizes (command line: leave out --size)")
     if channel.unit is not None and unit is not None:
-        raise ValueError(f"{name}: the file already stores the unit {channel.unit!r}; do not pass unit")
+        raise ValueError(f"{name}: the file already stores the unit {channel.unit!r}; do not pass unit "
+                         "(command line: leave out --unit)")
 
 
 def _sizes_in_unit(name, physical_sizes, dim, unit) -> tuple[float, ...]:
@@ -273,10 +282,15 @@ def _finish(topo, name, fill_undefined):
                          f"topography.to_uniform(...) and pass the topography instead of the file")
     if topo.has_undefined_data:
         n_bad = int(np.ma.count_masked(topo.heights()))
+        if n_bad == topo.heights().size:
+            raise ValueError(f"{name}: every height is undefined (NaN or infinite): no height data")
         if not fill_undefined:
-            raise ValueError(f"{name}: {n_bad} of {topo.heights().size} heights are undefined (NaN); "
-                             f"pass fill_undefined=True to fill them by harmonic interpolation")
+            raise ValueError(f"{name}: {n_bad} of {topo.heights().size} heights are undefined (NaN or infinite); "
+                             f"pass fill_undefined=True to fill them by harmonic interpolation (command line: "
+                             f"--fill-undefined)")
         topo = topo.interpolate_undefined_data()
+        warnings.warn(f"{name}: {n_bad} of {topo.heights().size} heights ({100 * n_bad / topo.heights().size:.3g} %) "
+                      "were undefined and are filled by harmonic interpolation", AsperityWarning, stacklevel=3)
     heights = np.ma.getdata(topo.heights())
     if not np.all(np.isfinite(heights)):
         raise ValueError(f"{name}: heights contain infinite or NaN values")

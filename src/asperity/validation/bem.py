@@ -272,7 +272,8 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
         out["sec"][j] = time.perf_counter() - start
         if not res.success:
             raise ValueError(f"the boundary-element solve did not converge at P = {i:.6g} N within {maxiter} "
-                             f"iterations ({res.message}); raise maxiter or tolerance, or use a coarser grid")
+                             f"iterations ({res.message}); raise maxiter or tolerance, or use a coarser grid (command "
+                             "line: --maxiter, --tolerance, --grid)")
         disp = res.x
         forces = np.asarray(res.jac)
         contact = forces > 0

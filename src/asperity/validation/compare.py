@@ -31,6 +31,7 @@ other model with its own input analysis (wall time, this process).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import time
@@ -53,10 +54,13 @@ from .models import AREA_METHODS, check_models, model_columns, run_icha, run_slo
 from .notes import comparison_notes, model_warning_notes
 from .plot import plot_validation
 
-__all__ = ["SurfaceValidation", "validate_surface", "METHODS"]
+__all__ = ["SurfaceValidation", "validate_surface", "METHODS", "NOMINAL_B"]
 
 #: The two estimates of the summit parameters compared with the BEM.
 METHODS = ("spectral", "detected")
+#: Burgers vector [m] the GW model uses for a material without one (it only scales the
+#: dimensionless groups of a contact without adhesion and friction: no result depends on it).
+NOMINAL_B = 2.5e-10
 
 
 @dataclass(frozen=True)
@@ -194,7 +198,7 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
         The elastic body (a name from the table, or :func:`asperity.materials.pair` for
         two bodies): its contact modulus :math:`E^*` drives all solutions; its Burgers
         vector scales the statistical model (Hertz without adhesion: results do not
-        depend on it).
+        depend on it; a material without one gets :data:`NOMINAL_B`, with a note).
     grid : int, optional
         Average the map down to at most ``grid`` points per axis first; all solutions
         then see the same averaged surface.
@@ -241,7 +245,11 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     except ValueError as err:
         raise ValueError(f"{source}: {err}") if source else err from None
     A0 = float(np.prod(topo.physical_sizes))
-    contacts = {}
+    contacts, notes = {}, []
+    if "gw" in models and mat.b is None:  # it scales the groups only: no adhesion, no friction here
+        mat = dataclasses.replace(mat, b=NOMINAL_B)
+        notes.append(f"material {mat.name!r} has no Burgers vector b: the GW model uses b = {NOMINAL_B:g} m, on which "
+                     "this comparison (no adhesion, no friction) does not depend")
     if "gw" in models:
         for method in METHODS:
             summits = getattr(analysis, method)
@@ -253,7 +261,7 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
              "iterations_bem": bem.iterations}
     costs = {"bem": float(np.sum(bem.seconds))}
     icha = None
-    notes = list(analysis.warnings) if analysis else []
+    notes = (list(analysis.warnings) if analysis else []) + notes
     if "gw" in models:
         curves, t_model = {}, {}
         for method in METHODS:
