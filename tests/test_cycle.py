@@ -337,3 +337,31 @@ def test_cycles_with_other_heights_retraction_and_energy(spec):
         assert c.loop_fraction * c.loop_energy < c.energy < float(h.sf(-0.4)) * c.loop_energy
     gauss = cycle(*p, d_min=-0.4, n=20)
     assert c.loop_fraction != pytest.approx(gauss.loop_fraction, rel=1e-3)  # the shape is used
+
+
+DEEP = (0.0016, 51.3, 0.0403)  # strong adhesion: the branch ends at u_end = -73.8, far beyond D_MAX = 30
+
+
+def test_a_cycle_may_start_beyond_where_the_approach_touches():
+    """Found by a review: with the branch's end deep in tension the default start
+    (10 - u_end = 83.8) and any d_max in (30, 30 - u_end] were refused ("d_max must lie in
+    [-10000, 30]"), and a preload was called 'beyond the domain'.  On approach nothing touches
+    above D_MAX = 30, so the approach force is 0 there; the closest approach for a preload is
+    the paper's load curve's separation, whatever the start; retraction from deep contact is
+    the separation curve (u_in = 0 < 30 - reach)."""
+    law = law_of(DEEP)
+    assert law.u_end < -70
+    c = cycle(*DEEP, preload=1.0)
+    assert c.d_max == pytest.approx(10.0 - law.u_end)
+    np.testing.assert_allclose(c.d_min, asperity.load_curve([1.0], *DEEP).d[0], rtol=1e-10)
+    assert cycle(*DEEP, preload=1.0, d_max=30.0).d_min == pytest.approx(c.d_min, rel=1e-12)
+    beyond = c.approach.d > 30.0
+    assert beyond.any() and np.all(c.approach.P[beyond] == 0.0) and np.all(c.approach.contacts[beyond] == 0.0)
+    d = np.linspace(35.0, 60.0, 6)
+    ret = cycle(*DEEP, d_min=-200.0, d=d).retract
+    ref = asperity.separation_curve(d, *DEEP)
+    np.testing.assert_allclose(ret.P, ref.P, rtol=1e-10, atol=1e-12 * np.abs(ref.P).max())
+    top = cycle(0.02, 50.0, 0.02, d_min=0.0, d_max=31.0)  # d_top = 30 - u_end = 31.7
+    assert top.d_max == 31.0 and top.approach.P[0] == 0.0
+    curve = preload_curve([0.5, 1.0], *DEEP)
+    np.testing.assert_allclose(curve.d_min, asperity.load_curve([0.5, 1.0], *DEEP).d, rtol=1e-10)

@@ -62,7 +62,7 @@ from ._validation import as_float_array, scalar
 from .asperity_law import ContactLaw
 from .curves import Model
 from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
-from .tabulation import Tabulation
+from .tabulation import D_MAX, Tabulation
 
 __all__ = ["ApproachLaw", "LoopBand", "CycleIntegrals", "law_columns", "check_u_in"]
 
@@ -314,8 +314,17 @@ class CycleIntegrals:
         """The model's tabulation of the paper's integrals, serving [d_lo, d_hi]."""
         return self.model.tabulation(d_lo, d_hi)
 
+    @property
+    def approach_top(self) -> float:
+        """Largest separation of the approach tabulation, :data:`~asperity.tabulation.D_MAX` minus
+        the approach law's end: beyond it no asperity touches on approach (every sum is 0)."""
+        return D_MAX - float(self.approach_law.u_end)
+
     def approach_tab(self, d_lo: float, d_hi: float) -> Tabulation:
-        """A tabulation of :class:`ApproachLaw` serving [d_lo, d_hi] (cached, widened as needed)."""
+        """A tabulation of :class:`ApproachLaw` serving [d_lo, d_hi] (cached, widened as needed),
+        cut at :attr:`approach_top`."""
+        d_hi = min(d_hi, self.approach_top)
+        d_lo = min(d_lo, d_hi)
         if self.reach == 0.0:
             return self.paper_tab(d_lo, d_hi)
         if self._tab_app is None:
@@ -333,11 +342,20 @@ class CycleIntegrals:
 
     # -- sums -----------------------------------------------------------------------------
     def approach_sums(self, d, order: int = 0):
-        """``[S_0, .., S_order]`` on approach at separations ``d`` (1-D): shape (n, 4) each."""
+        """``[S_0, .., S_order]`` on approach at separations ``d`` (1-D): shape (n, 4) each (0
+        beyond :attr:`approach_top`, which a cycle's start may pass when the asperities' branch
+        ends deep in tension)."""
         d = np.asarray(d, dtype=float).ravel()
-        if d.size == 0:
-            return [np.zeros((0, 4)) for _ in range(order + 1)]
-        return self.approach_tab(float(d.min()), float(d.max())).sums(d, order)
+        inside = d <= self.approach_top
+        if inside.all():
+            if d.size == 0:
+                return [np.zeros((0, 4)) for _ in range(order + 1)]
+            return self.approach_tab(float(d.min()), float(d.max())).sums(d, order)
+        out = [np.zeros((d.size, 4)) for _ in range(order + 1)]
+        if inside.any():
+            for o, part in zip(out, self.approach_sums(d[inside], order), strict=True):
+                o[inside] = part
+        return out
 
     def paper_sums(self, d, order: int = 0):
         """``[S_0, .., S_order]`` of the paper's integrals (Eq 18's lower limit) at ``d``."""

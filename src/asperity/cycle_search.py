@@ -66,14 +66,15 @@ def closest_approach(ci: CycleIntegrals, preload, d_max: float):
     P_max = float(preload.max())
     p = ci.params
     model = f"alpha = {p.alpha:g}, beta = {p.beta:g}, gamma = {p.gamma:g}"
+    d_hi = min(d_max, ci.approach_top)  # beyond it the approach force is 0
     try:
-        d_lo = start_separation(ci.params, P_max, d_max)
-        d_lo, tab = bracket_low(ci.approach_tab(d_lo, d_max), P_max, d_lo, d_max)
+        d_lo = min(start_separation(ci.params, P_max, d_hi), d_hi - 1.0)
+        d_lo, tab = bracket_low(ci.approach_tab(d_lo, d_hi), P_max, d_lo, d_hi)
     except ValueError:
         raise ValueError(f"preload = {P_max:g} (in N G b^2) is beyond the domain of the model with {model}: it "
                          f"needs a separation below d/sigma = {D_MIN:g}") from None
     ci.set_approach_tab(tab)
-    branch = stable_branch(tab, d_lo, d_max)
+    branch = stable_branch(tab, d_lo, d_hi)
     floor = branch.P[-1]
     if preload.min() < floor:
         raise ValueError(f"preload must be >= {floor:.6g} for the model with {model}: a smaller one is reached "
