@@ -314,3 +314,55 @@ def test_the_local_cluster_runs_its_workers_with_asperity_settings(serial):
     finally:
         client.close()
         cluster.close()
+
+
+def test_store_bytes_is_at_least_what_the_results_hold(serial):
+    """The size estimate behind the room checks: 8 bytes per value of every variable, counted
+    from the spec, against what the computed dataset's float variables hold."""
+    from asperity.sweeps.spec import make_spec
+
+    spec = make_spec({"alpha": ALPHAS, "beta": 1000.0, "gamma": GAMMAS}, P=LOADS)
+    floats = sum(serial[k].nbytes for k in serial.data_vars if serial[k].dtype.kind == "f")
+    assert floats == spec.n_sets * (store_module.store_bytes(spec) / spec.n_sets - 4 * store_module.MESSAGE_CHARS)
+
+
+@pytest.mark.parametrize("name", ["big.nc", "big.zarr"])
+def test_a_grid_larger_than_the_free_disk_is_refused_before_any_file(tmp_path, monkeypatch, name):
+    """Found by a review: a 2000^3 grid filled the disk, then failed with a traceback."""
+    import collections
+
+    usage = collections.namedtuple("usage", "total used free")
+    monkeypatch.setattr(store_module.shutil, "disk_usage", lambda path: usage(1e12, 1e12 - 1e3, 1e3))
+    with pytest.raises(ValueError, match=r"take about .* GB, more than the 1e-06 GB free where"):
+        asperity.sweep(**grid(out=str(tmp_path / name)))
+    assert not list(tmp_path.iterdir())
+
+
+def test_a_grid_larger_than_half_the_memory_is_refused_in_memory(monkeypatch):
+    sizes = {"SC_PAGE_SIZE": 4096, "SC_PHYS_PAGES": 10}
+    monkeypatch.setattr(store_module.os, "sysconf", lambda name: sizes[name])
+    with pytest.raises(ValueError, match=r"more than half this machine's memory .*give out="):
+        asperity.sweep(**grid())
+
+
+def test_a_file_that_is_no_sweep_store_is_named(tmp_path):
+    out = tmp_path / "c.nc"
+    (tmp_path / "c.nc.partial").write_text("x\n")
+    with pytest.raises(ValueError, match=r"c.nc.partial is not a sweep store \(.*\); choose another output"):
+        asperity.sweep(**grid(out=str(out)))
+
+
+def test_a_write_error_is_one_named_error_and_keeps_the_chunks(tmp_path, monkeypatch):
+    """A store that cannot be written (a full disk: netCDF4 raises RuntimeError 'HDF error')
+    ends the sweep with a ValueError naming the store; the partial store stays for resuming."""
+    calls = []
+
+    def failing(self, k, result):
+        calls.append(k)
+        raise RuntimeError("NetCDF: HDF error")
+    monkeypatch.setattr(store_module.NetCDFStore, "write", failing)
+    out = tmp_path / "s.nc"
+    with pytest.raises(ValueError, match=r"cannot write the sweep to .*s.nc \(RuntimeError: NetCDF: HDF error\); the "
+                                         r"chunks written are kept for resume=True"):
+        asperity.sweep(**grid(out=str(out)))
+    assert calls and os.path.exists(str(out) + ".partial")

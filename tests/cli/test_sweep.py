@@ -93,6 +93,8 @@ def test_resume_and_refusal(capsys, tmp_path):
     (["--points", "nowhere.csv", "--P", "1"], "no such file"),
     (["--material", "Au,", "--P", "1"], "empty name"),
     (["--alpha", "0.01", "--beta", "1000", "--P", "1", "--chunk-sets", "0"], "chunk_sets"),
+    (["--alpha", "1e-3:0.1:2000", "--beta", "1:1e4:2000", "--gamma", "1e-5:1e-2:2000", "--P", "1"],
+     "more than the"),  # 8e9 sets: about 1.3e4 GB, refused before any file is made
 ])
 def test_errors_are_one_line(capsys, tmp_path, argv, needle):
     code, _, err = run(capsys, "sweep", *argv, "--out", str(tmp_path / "x.nc"), "--scheduler", "serial")
@@ -123,3 +125,12 @@ def test_unreachable_scheduler_is_one_line_and_writes_nothing(capsys, tmp_path, 
                        str(tmp_path / "m.nc"), "--scheduler", "tcp://127.0.0.1:9")
     assert one_line_error(code, err, "cannot reach the Dask scheduler")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_an_existing_directory_that_is_no_sweep_is_named(capsys, tmp_path):
+    """Found by a review: an empty ``map.zarr/`` was refused as 'a directory; give a file
+    name', though a Zarr store is a directory; now the library says it is no sweep store."""
+    (tmp_path / "map.zarr").mkdir()
+    code, _, err = run(capsys, "sweep", "--alpha", "0.01", "--beta", "1000", "--P", "1", "--out",
+                       str(tmp_path / "map.zarr"), "--scheduler", "serial")
+    assert one_line_error(code, err, "map.zarr is not a sweep store"), err

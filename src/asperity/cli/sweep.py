@@ -42,6 +42,12 @@ PHYSICAL_OPTIONS = (("--sigma-s", "sigma_s", "m"), ("--R", "R", "m"), ("--eta", 
 ALIASES = {"--sigma-s": ("--sigma",), "--R": ("--radius",), "--eta": ("--density",), "--area": ()}
 
 
+def _store_path(text: str) -> str:
+    """argparse type of ``--out``: a file name, or a ``.zarr`` directory (the library then says
+    whether an existing one holds this sweep)."""
+    return text if text.rstrip("/").endswith(".zarr") and text.strip("/") else output_file(text)
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     g = parser.add_argument_group("model parameters (dimensionless): a value or a list each")
     for option, name in MODEL_OPTIONS:
@@ -57,7 +63,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     s.add_argument("--d", metavar="LIST", help="separations d/sigma of every set (instead of loads)")
     s.add_argument("--load", metavar="LIST", help="physical loads with a force unit, e.g. 1mN:1N:30")
     s.add_argument("--separation", metavar="LIST", help="physical separations with a length unit, e.g. -2nm:10nm:50")
-    s.add_argument("--out", metavar="PATH", type=output_file, default="sweep.nc",
+    s.add_argument("--out", metavar="PATH", type=_store_path, default="sweep.nc",
                    help="NetCDF file, or Zarr directory if it ends in .zarr (default: sweep.nc)")
     s.add_argument("--resume", action="store_true",
                    help="complete an interrupted sweep of the same arguments at --out (only its missing chunks)")

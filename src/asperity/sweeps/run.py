@@ -286,10 +286,26 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
                 close()
             if bar is not None:
                 bar.close()
+    except (OSError, RuntimeError) as err:  # the store's file: a full disk, say (HDF error)
+        _close_quietly(store)
+        where = store.path or "memory"
+        raise ValueError(f"cannot write the sweep to {where} ({type(err).__name__}: {' '.join(str(err).split())})"
+                         + ("; the chunks written are kept for resume=True (--resume)" if store.path else "")) from None
     except BaseException:
         store.close()
         raise
-    return store.finish()
+    try:
+        return store.finish()
+    except (OSError, RuntimeError) as err:
+        raise ValueError(f"cannot finish the sweep at {store.path} ({type(err).__name__}: "
+                         f"{' '.join(str(err).split())})") from None
+
+
+def _close_quietly(store) -> None:
+    try:
+        store.close()
+    except (OSError, RuntimeError):
+        pass
 
 
 def _sets(spec, k) -> int:

@@ -26,7 +26,7 @@ from .._optional import require
 from .._version import __version__
 from .spec import SweepSpec
 
-__all__ = ["open_store", "open_result", "MemoryStore", "NetCDFStore", "ZarrStore", "MESSAGE_CHARS"]
+__all__ = ["open_store", "open_result", "store_bytes", "MemoryStore", "NetCDFStore", "ZarrStore", "MESSAGE_CHARS"]
 
 #: Longest message kept per set (Zarr stores fixed-width strings).
 MESSAGE_CHARS = 400
@@ -260,10 +260,48 @@ def open_result(path) -> object:
 
 def _stored_fingerprint(path: str, zarr: bool) -> str | None:
     xr = require("xarray", purpose=_PURPOSE)
-    if zarr:
-        return xr.open_zarr(path, consolidated=False).attrs.get("sweep_fingerprint")
-    with xr.open_dataset(path) as ds:
-        return ds.attrs.get("sweep_fingerprint")
+    try:
+        if zarr:
+            return xr.open_zarr(path, consolidated=False).attrs.get("sweep_fingerprint")
+        with xr.open_dataset(path) as ds:
+            return ds.attrs.get("sweep_fingerprint")
+    except Exception as err:  # noqa: BLE001 - whatever the backends say, it is no sweep store
+        reason = " ".join(str(err).split())[:200]
+        raise ValueError(f"{path} is not a sweep store ({type(err).__name__}: {reason}); choose another output "
+                         "or delete it") from None
+
+
+def store_bytes(spec: SweepSpec) -> int:
+    """Bytes the results of ``spec`` take, at least: 8 per value of every variable, 4 per
+    character of the message of every set (:data:`MESSAGE_CHARS`)."""
+    m = spec.values.size
+    per_set = sum(m if where == "curve" else 1 for _, _, where in spec.variables().values()) * 8
+    return spec.n_sets * (per_set + 4 * MESSAGE_CHARS)
+
+
+def _gb(n: float) -> str:
+    return f"{n / 1e9:.3g} GB"
+
+
+def _check_room(spec: SweepSpec, out: str | None) -> None:
+    """Refuse a sweep whose results cannot fit: in memory (``out=None``) half the machine's
+    memory, on disk the free space where ``out`` goes (found by a review: a 2000^3 grid
+    filled the disk, then failed with a traceback)."""
+    need = store_bytes(spec)
+    if out is None:
+        try:
+            memory = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+        except (ValueError, OSError, AttributeError):
+            return
+        if need > memory / 2:
+            raise ValueError(f"the sweep's results ({spec.n_sets} parameter sets) take about {_gb(need)}, more than "
+                             f"half this machine's memory ({_gb(memory)}): give out= (a .zarr or NetCDF store, "
+                             "written chunk by chunk) or a smaller grid")
+        return
+    free = shutil.disk_usage(os.path.dirname(os.path.abspath(out)) or ".").free
+    if need > free:
+        raise ValueError(f"the sweep's results ({spec.n_sets} parameter sets) take about {_gb(need)}, more than the "
+                         f"{_gb(free)} free where {out} goes: choose a smaller grid or another disk")
 
 
 def open_store(spec: SweepSpec, out: str | None, *, resume: bool):
@@ -273,10 +311,13 @@ def open_store(spec: SweepSpec, out: str | None, *, resume: bool):
     ------
     ValueError
         If ``out`` (or its ``.partial``) holds another sweep (a different fingerprint: other
-        parameters, loads, chunking or asperity version), if ``out`` exists and ``resume``
-        is False, or an interrupted sweep is there and ``resume`` is False.
+        parameters, loads, chunking or asperity version) or is not a sweep store, if ``out``
+        exists and ``resume`` is False, an interrupted sweep is there and ``resume`` is
+        False, or the results would not fit (:func:`store_bytes`: half the machine's memory
+        without ``out``, the free disk space with it).
     """
     if out is None:
+        _check_room(spec, None)
         return MemoryStore(spec)
     out = os.fspath(out)
     zarr = out.rstrip("/").endswith(".zarr")
@@ -296,4 +337,5 @@ def open_store(spec: SweepSpec, out: str | None, *, resume: bool):
         if path == out:
             return None  # finished already: nothing to compute
         return cls(spec, out, create=False)
+    _check_room(spec, out)
     return cls(spec, out, create=True)
