@@ -308,7 +308,8 @@ SKIP = {
     **{name: "a part of asperity.sweep, called with the SweepSpec it validated (sweep and make_spec are fuzzed)"
        for name in ("asperity.sweeps.compute.compute_chunk", "asperity.sweeps.compute.compute_set",
                     "asperity.sweeps.store.open_store", "asperity.sweeps.store.MemoryStore",
-                    "asperity.sweeps.store.NetCDFStore", "asperity.sweeps.store.ZarrStore")},
+                    "asperity.sweeps.store.NetCDFStore", "asperity.sweeps.store.ZarrStore",
+                    "asperity.sweeps.store.store_bytes")},
     "asperity.sweeps.store.open_result": "opens a finished sweep file with xarray (tests/test_sweeps.py)",
     **{name: "an inner step of the height distributions (moments, quadrature, sums, fits) called by the "
              "distributions and fit_heights on values they checked (those entry points are fuzzed)"
