@@ -104,3 +104,38 @@ def test_names_come_from_the_registry(contact):
     c = contact.cycle(preload=1e-3, n=5)
     scalars = {k for part in ("pull_off", "energy") for k in c.to_dict()[part] if k != "exists"}
     assert scalars - {"force_N", "d_m"} <= si
+
+
+def test_inputs_are_checked_in_the_users_units(contact):
+    """Found by a review: a negative physical preload was quoted in N G b^2, u_in in sigma,
+    'inf N/m' (which the command line suggests) refused, 2-D lists flattened silently and
+    too many values blamed on their range."""
+    a = contact.cycle(preload=5e-6, stiffness="inf N/m", n=40)
+    b = contact.cycle(preload=5e-6, n=40)
+    assert a.stiffness_N_m == math.inf and a.energy_J == b.energy_J
+    low = contact.model.law.u_end * contact.surface.sigma_s
+    cases = [(dict(stiffness="-inf N/m"), "must be > 0 N/m, or inf for displacement control, got -inf"),
+             (dict(stiffness=math.nan), "or inf for displacement control, got nan"),
+             (dict(u_in="1nm"), f"must lie in \\[{low:.6g}, 0\\] m for this contact .* got 1e-09 m")]
+    for kwargs, needle in cases:
+        with pytest.raises(ValueError, match=needle):
+            contact.cycle(preload=5e-6, n=40, **kwargs)
+    for preload, needle in (([1e-6, -1e-6], "must be > 0 N, got min -1e-06 N"), ([[1e-6]], "1-D"),
+                            (np.full(1_000_001, 1e-6), "at most 1000000 values, got 1000001")):
+        with pytest.raises(ValueError, match=needle):
+            contact.preload_curve(preload)
+    with pytest.raises(ValueError, match="1-D"):
+        contact.cycle(preload=5e-6, d=[[1e-9, 2e-9]])
+
+
+def test_dimensionless_lists_are_one_dimensional_and_counted():
+    p = (0.02, 50.0, 0.02)
+    for kwargs, needle in ((dict(d=[[1.0, 2.0], [3.0, 4.0]]), "d must be a number or a 1-D"),
+                           (dict(d=np.linspace(0.0, 5.0, 1_000_001)), "at most 1000000 values, got 1000001")):
+        with pytest.raises(ValueError, match=needle):
+            cycle(*p, d_min=0.0, **kwargs)
+    with pytest.raises(ValueError, match="preload must be a number or a 1-D"):
+        preload_curve([[1.0, 2.0]], *p)
+    for k in (-math.inf, math.nan):
+        with pytest.raises(ValueError, match=r"valid range 1e-100 <= stiffness <= inf\), got"):
+            cycle(*p, d_min=0.0, stiffness=k)

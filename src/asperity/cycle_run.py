@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from ._validation import as_float_array, scalar
+from ._validation import as_float_array, check_1d, scalar
 from .cycle_integrals import CycleIntegrals, chebyshev_points
 from .cycle_result import BranchCurve, CycleResult, PreloadCurve
 from .cycle_search import closest_approach, first_zero, retract_pull_off
@@ -163,10 +163,12 @@ def compute_cycle(ci: CycleIntegrals, *, d_min=None, preload=None, d_max=None, d
         if not math.isinf(k):
             raise ValueError("d (separations) evaluates the displacement-controlled branches; with a finite "
                              "stiffness the measured path is computed: give n instead of d")
-        d = as_float_array(d, "d").ravel()
-        if d.size > MAX_POINTS or np.any((d < d_min) | (d > d_max)):
-            raise ValueError(f"d (separations) must lie in [d_min, d_max] = [{d_min:.6g}, {d_max:.6g}] (at most "
-                             f"{MAX_POINTS} values), got values from {d.min():g} to {d.max():g}")
+        d = check_1d(d, "d")
+        if d.size > MAX_POINTS:
+            raise ValueError(f"d (separations) must hold at most {MAX_POINTS} values, got {d.size}")
+        if np.any((d < d_min) | (d > d_max)):
+            raise ValueError(f"d (separations) must lie in [d_min, d_max] = [{d_min:.6g}, {d_max:.6g}], got values "
+                             f"from {d.min():g} to {d.max():g}")
         grid = d
     else:
         grid = _path_grid(d_min, d_max, ci.reach, n)
@@ -308,10 +310,12 @@ def compute_preload_curve(ci: CycleIntegrals, preload, *, d_max=None) -> Preload
     Fuller & Tabor (1975); Adams et al., Eq (18), Table 1.
     """
     d_max = _check_d_max(ci, d_max)
-    P = as_float_array(preload, "preload").ravel()
-    if P.size > MAX_POINTS or np.any(P <= 0):
-        raise ValueError(f"preload (largest compressive loads, P/(N G b^2)) must be > 0 (compressive), at most "
-                         f"{MAX_POINTS} values; got min {P.min():g}")
+    P = check_1d(preload, "preload")
+    if P.size > MAX_POINTS:
+        raise ValueError(f"preload must hold at most {MAX_POINTS} values, got {P.size}")
+    if np.any(P <= 0):
+        raise ValueError(f"preload (largest compressive loads, P/(N G b^2)) must be > 0 (compressive); got min "
+                         f"{P.min():g}")
     d_min = closest_approach(ci, P, d_max)
     pos, loop = [], np.empty((P.size, 4))
     for start in range(0, P.size, _CHUNK):  # bounded memory for long preload lists

@@ -89,9 +89,13 @@ STIFFNESS_MIN = 1e-100
 
 def check_stiffness(stiffness) -> float:
     """``stiffness`` as a float in [:data:`STIFFNESS_MIN`, inf]; ValueError naming it otherwise."""
-    if isinstance(stiffness, float | int | np.floating | np.integer) and not isinstance(stiffness, bool | np.bool_) \
-            and math.isinf(stiffness) and stiffness > 0:
+    number = (isinstance(stiffness, float | int | np.floating | np.integer)
+              and not isinstance(stiffness, bool | np.bool_))
+    if number and math.isinf(stiffness) and stiffness > 0:
         return math.inf
+    if number and not stiffness >= STIFFNESS_MIN:  # -inf and NaN too: say what is valid, inf included
+        raise ValueError(f"stiffness (instrument spring, k sigma/(N G b^2)) must be >= {STIFFNESS_MIN:g} (inf: "
+                         f"displacement control; valid range {STIFFNESS_MIN:g} <= stiffness <= inf), got {stiffness!r}")
     k = float(scalar(as_float_array(stiffness, "stiffness"), "stiffness"))
     if not k >= STIFFNESS_MIN:
         raise ValueError(f"stiffness (instrument spring, k sigma/(N G b^2)) must be >= {STIFFNESS_MIN:g} (inf: "

@@ -31,9 +31,10 @@ import numpy as np
 
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._json import json_safe
-from ._validation import as_float_array, check_finite_result, check_scalar_positive, scalar
+from ._validation import as_float_array, check_1d, check_finite_result, check_scalar_positive, scalar
 from .cycle import CycleResult, PreloadCurve, compute_cycle, compute_preload_curve
 from .cycle_integrals import CycleIntegrals
+from .cycle_run import MAX_POINTS
 from .instrument import STIFFNESS_MIN
 from .physical import PhysicalContact, PhysicalCurve, PhysicalPullOff, warn_area_fraction
 from .quantities import CYCLE_QUANTITIES
@@ -175,9 +176,19 @@ def _length(value, name, required=False):
 
 
 def _stiffness(contact: PhysicalContact, stiffness) -> float:
-    if stiffness is None or (isinstance(stiffness, float | int) and not isinstance(stiffness, bool)
-                             and math.isinf(stiffness) and stiffness > 0):
+    if stiffness is None:
         return math.inf
+    if not isinstance(stiffness, bool):  # inf (displacement control) in any spelling: 'inf N/m', a Quantity
+        try:
+            raw = to_si(stiffness, "N/m", "stiffness")
+            value = float(raw) if isinstance(raw, float | int | np.floating | np.integer) else None
+        except (TypeError, ValueError):
+            value = None
+        if value is not None and math.isinf(value) and value > 0:
+            return math.inf
+        if value is not None and not value > 0:
+            raise ValueError(f"stiffness (the instrument's spring) must be > 0 N/m, or inf for displacement control, "
+                             f"got {value!r}")
     k = check_scalar_positive(stiffness, "stiffness", "N/m")
     with np.errstate(all="ignore"):
         k_bar = float(np.float64(k) * contact.surface.sigma_s / contact.force_scale)
@@ -186,6 +197,16 @@ def _stiffness(contact: PhysicalContact, stiffness) -> float:
                          f"must lie in [{STIFFNESS_MIN:g}, inf) (N G b^2 = {contact.force_scale:.6g} N, sigma_s = "
                          f"{contact.surface.sigma_s:.6g} m)")
     return k_bar
+
+
+def _check_u_in_m(contact: PhysicalContact, u_in_m: float) -> float:
+    """``u_in`` [m] in [u_end sigma_s, 0], named in metres (the dimensionless check says the same in sigma)."""
+    low = float(contact.model.law.u_end) * contact.surface.sigma_s
+    if not low <= u_in_m <= 0.0:
+        raise ValueError(f"u_in (penetration at which an approaching asperity jumps into contact) must lie in "
+                         f"[{low:.6g}, 0] m for this contact (from the end of the stable branch to first touch), "
+                         f"got {u_in_m:g} m")
+    return u_in_m
 
 
 def _scaled(contact: PhysicalContact, err: ValueError) -> ValueError:
@@ -267,14 +288,14 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     sigma, fs = contact.surface.sigma_s, contact.force_scale
     d_min = _length(d_min, "d_min")
     d_max = _length(d_max, "d_max")
-    u_in_m = _length(u_in, "u_in", required=True)
+    u_in_m = _check_u_in_m(contact, _length(u_in, "u_in", required=True))
     if preload is not None:
         preload = check_scalar_positive(preload, "preload", "N")
         with np.errstate(all="ignore"):
             preload = float(check_finite_result(np.float64(preload) / fs, "preload/(N G b^2)", preload=preload))
     k = _stiffness(contact, stiffness)
     if d is not None:
-        d = as_float_array(to_si(d, "m", "d"), "d").ravel()
+        d = check_1d(to_si(d, "m", "d"), "d")
         with np.errstate(all="ignore"):
             d = check_finite_result(d / sigma, "d/sigma_s", d=d, sigma_s=sigma)
     try:
@@ -343,9 +364,13 @@ def physical_preload_curve(contact: PhysicalContact, preload, *, d_max=None, u_i
     if not isinstance(contact, PhysicalContact):
         raise ValueError(f"contact must be an asperity.physical.PhysicalContact, got {type(contact).__name__}")
     sigma, fs = contact.surface.sigma_s, contact.force_scale
-    P = as_float_array(to_si(preload, "N", "preload"), "preload").ravel()
+    P = check_1d(to_si(preload, "N", "preload"), "preload")
+    if P.size > MAX_POINTS:
+        raise ValueError(f"preload must hold at most {MAX_POINTS} values, got {P.size}")
+    if np.any(P <= 0):
+        raise ValueError(f"preload (largest compressive loads) must be > 0 N, got min {P.min():g} N")
     d_max = _length(d_max, "d_max")
-    u_in_m = _length(u_in, "u_in", required=True)
+    u_in_m = _check_u_in_m(contact, _length(u_in, "u_in", required=True))
     try:
         ci = CycleIntegrals(contact.model, u_in_m / sigma)
         with np.errstate(all="ignore"):
