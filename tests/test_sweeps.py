@@ -207,6 +207,10 @@ def test_interrupted_sweep_resumes_computing_only_missing_chunks(tmp_path, monke
     (dict(alpha=0.01, beta=1.0, sigma_s=1e-9, P=[1.0]), "not both"),
     (dict(alpha=0.01, beta=1.0), "give loads P or separations d"),
     (dict(alpha=0.01, beta=1.0, P=[1.0], d=[0.0]), "give loads P or separations d"),
+    (dict(alpha=[0.01, 0.01], beta=1.0, P=[1.0]), r"alpha must hold distinct values .* got 0.01 more than once"),
+    (dict(alpha=0.01, beta=1.0, P=[1.0, 1.0]), "P must hold distinct values"),
+    (dict(alpha=0.01, beta=1.0, P=np.ones(1_000_001)), "at most 1000000 values"),
+    (dict(material=["Au", "Au"], sigma_s=2e-9, R=1e-6, eta=1e12, area=1e-6, P=[1e-3]), "'Au' more than once"),
     (dict(alpha=[0.01, -1.0], beta=1.0, P=[1.0]), "alpha must satisfy 0 < alpha"),
     (dict(alpha=0.01, P=[1.0]), "needs beta"),
     (dict(alpha=0.01, beta=1.0, P=[[1.0]]), "P must be 1-D"),
@@ -366,3 +370,9 @@ def test_a_write_error_is_one_named_error_and_keeps_the_chunks(tmp_path, monkeyp
                                          r"chunks written are kept for resume=True"):
         asperity.sweep(**grid(out=str(out)))
     assert calls and os.path.exists(str(out) + ".partial")
+
+
+def test_a_list_of_points_may_repeat_values():
+    ds = asperity.sweep(points={"alpha": [0.01, 0.01], "beta": [1000.0, 300.0]}, P=[1.0], scheduler="serial")
+    for i, beta in enumerate((1000.0, 300.0)):
+        assert ds.mu.values[i, 0] == asperity.Model(0.01, beta).load_curve([1.0]).mu[0]

@@ -30,6 +30,6 @@ def test_materials_values_round_trip(capsys):
     table = {row["name"]: row for row in material_table()}
     assert code == 0
     for r in rows_of(out):
-        for key in ("E_Pa", "nu", "b_m", "work_of_adhesion_J_m2"):
+        for key in ("E_Pa", "nu", "b_m", "work_of_adhesion_J_m2", "hardness_Pa", "ise_H0_Pa", "ise_h_star_m"):
             want = table[r["name"]][key]
             assert (r[key] == "") if want is None else float(r[key]) == want

@@ -8,11 +8,12 @@ from ._args import add_output_arguments
 
 NAME = "materials"
 HELP = "list the materials table (SI units, with sources)"
-DESCRIPTION = ("The shipped materials table: E [Pa], nu, Burgers vector b [m], work of adhesion w [J/m^2]; "
+DESCRIPTION = ("The shipped materials table: E [Pa], nu, Burgers vector b [m], work of adhesion w [J/m^2], "
+               "hardness H [Pa] and the Nix-Gao size-effect pair H0 [Pa], h* [m] (docs/plasticity.md); "
                "empty = missing, with sources.")
 
 #: Columns listed, in order (``sources`` only with ``--sources``).
-KEYS = ("name", "kind", "E_Pa", "nu", "b_m", "work_of_adhesion_J_m2")
+KEYS = ("name", "kind", "E_Pa", "nu", "b_m", "work_of_adhesion_J_m2", "hardness_Pa", "ise_H0_Pa", "ise_h_star_m")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -43,6 +43,8 @@ MODEL_NAMES = ("alpha", "beta", "gamma", "nu", "h_over_b", "tau_f1", "tau_f2", "
 PHYSICAL_NAMES = ("material", "sigma_s", "R", "eta", "area")
 #: Most sets per chunk: ~0.5 s of work per task keeps the scheduler's share (ms per task) small.
 CHUNK_SETS = 256
+#: Loads (or separations) per curve at most, as on the command line.
+MAX_CURVE_POINTS = 10**6
 
 
 def default_chunk_sets(n_sets: int) -> int:
@@ -196,7 +198,19 @@ def _axis_values(kind, P, d):
     values = as_float_array(P if P is not None else d, name)
     if values.ndim != 1:
         raise ValueError(f"{name} must be 1-D (one value per point of each curve), got shape {values.shape}")
+    if values.size > MAX_CURVE_POINTS:
+        raise ValueError(f"{name} must hold at most {MAX_CURVE_POINTS} values (points of each curve), got "
+                         f"{values.size}")
+    _distinct(name, values)
     return name, values
+
+
+def _distinct(name, values) -> None:
+    """Refuse a repeated value along a dimension of the grid (``.sel`` would be ambiguous)."""
+    seen = np.unique(values, return_counts=True)
+    if np.any(seen[1] > 1):
+        raise ValueError(f"{name} must hold distinct values (a dimension of the sweep's grid), got "
+                         f"{seen[0][seen[1] > 1][0].item()!r} more than once")
 
 
 def _parameter(name, value, kind):
@@ -269,6 +283,8 @@ def make_spec(parameters: dict, *, points=None, P=None, d=None, chunk_sets=None)
         coords, dims = {n: cols[n] for n in allowed if n in cols}, ("point",)
     else:
         coords = {n: values[n] for n in allowed if isinstance(values.get(n), np.ndarray)}
+        for n, v in coords.items():  # a grid's dimensions (a list of points may repeat values)
+            _distinct(n, v)
         dims = tuple(coords) or ("point",)
         if not coords:  # a single set
             coords = {required[0]: np.atleast_1d(constants.pop(required[0]))}
