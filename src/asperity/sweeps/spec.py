@@ -210,7 +210,7 @@ def _distinct(name, values) -> None:
     seen = np.unique(values, return_counts=True)
     if np.any(seen[1] > 1):
         raise ValueError(f"{name} must hold distinct values (a dimension of the sweep's grid), got "
-                         f"{seen[0][seen[1] > 1][0].item()!r} more than once")
+                         f"{_item(seen[0][seen[1] > 1][0])!r} more than once")
 
 
 def _parameter(name, value, kind):
