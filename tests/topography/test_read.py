@@ -291,3 +291,22 @@ def test_directory_and_non_path(tmp_path):
     for bad in (3, None, b"scan.npy", ["scan.npy"], np.zeros((8, 8))):
         with pytest.raises(TypeError, match="path must be a str or os.PathLike"):
             read_topography(bad)
+
+
+def test_npy_first_axis_is_x_text_rows_are_y_and_long_pixels_are_noted(tmp_path):
+    """The convention docs/physical.md states (SurfaceTopography's): the same array saved with
+    np.save and np.savetxt is read transposed; a .npy map with pixels more than twice as long
+    one way gets a note naming the convention (found by a review), a square-pixel one none."""
+    h = np.random.default_rng(3).standard_normal((24, 40))
+    np.save(tmp_path / "a.npy", h)
+    np.savetxt(tmp_path / "a.txt", h)
+    with pytest.warns(asperity.AsperityWarning, match=r"a.npy: the pixels are 208.3 x 75 nm \(x by y\): a .npy "
+                                                       r"array's first axis is x \(24 points\)"):
+        npy = read_topography(tmp_path / "a.npy", physical_sizes=("5um", "3um"), unit="nm")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        txt = read_topography(tmp_path / "a.txt", physical_sizes=("5um", "3um"), unit="nm")
+        square = read_topography(tmp_path / "a.npy", physical_sizes=("2.4um", "4um"), unit="nm")
+    assert npy.nb_grid_pts == (24, 40) and txt.nb_grid_pts == (40, 24) and square.nb_grid_pts == (24, 40)
+    np.testing.assert_array_equal(npy.heights(), square.heights())
+    np.testing.assert_allclose(np.asarray(txt.heights()).T, npy.heights(), rtol=1e-15)

@@ -116,7 +116,20 @@ def read_topography(path, *, physical_sizes=None, unit=None, channel_index=None,
         topo = _read(st, name, fmt, physical_sizes, unit, channel_index)
     for w in caught:
         warnings.warn(f"{name}: {w.message}", w.category, stacklevel=2)
+    if fmt == "npy" and topo.dim == 2:
+        _note_pixel_shape(topo, name)
     return _finish(topo, name, fill_undefined)
+
+
+def _note_pixel_shape(topo, name: str) -> None:
+    """A note when a ``.npy`` map's pixels are more than twice as long one way as the other:
+    its first axis is x (SurfaceTopography's convention), unlike a text matrix's rows."""
+    dx, dy = (float(s) / n for s, n in zip(topo.physical_sizes, topo.nb_grid_pts, strict=True))
+    if max(dx, dy) > 2.0 * min(dx, dy):
+        unit = f" {topo.unit}" if topo.unit else ""
+        warnings.warn(f"{name}: the pixels are {dx:.4g} x {dy:.4g}{unit} (x by y): a .npy array's first axis is x "
+                      f"({topo.nb_grid_pts[0]} points), unlike a text matrix's rows; if the array is an image (rows "
+                      "are scan lines), save its transpose or swap the sizes", AsperityWarning, stacklevel=3)
 
 
 def _file_name(path) -> str:
