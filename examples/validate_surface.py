@@ -17,9 +17,12 @@ from __future__ import annotations
 
 import argparse
 import pathlib
+import sys
+import warnings
 
 import numpy as np
 
+from asperity import AsperityWarning
 from asperity.materials import material
 from asperity.validation import validate_surface
 from asperity.validation.models import MODELS
@@ -66,13 +69,14 @@ def main(argv=None):
               " ".join(f"{1 + t[f'dev_{m}'][i]:9.3f}" for m in result.methods) +
               f" {t['gap_bem_m'][i] * 1e9:13.3f} {t['gap_spectral_m'][i] * 1e9:7.2f} {t['gap_icha_m'][i] * 1e9:8.2f}"
               f" {t['spots_bem'][i]:6d} {t['contacts_spectral'][i]:6.1f} {t['spots_icha'][i]:5d}")
-    print("largest |A_model/A_BEM - 1| up to 20 % real area: " +
-          ", ".join(f"{m} {result.deviation(m):.1%}" for m in result.methods))
+    if np.min(t["fraction_bem"]) <= 0.2:
+        print("largest |A_model/A_BEM - 1| up to 20 % real area: " +
+              ", ".join(f"{m} {result.deviation(m):.1%}" for m in result.methods))
     c = result.costs
     print(f"cost: boundary elements {c['bem']:.2f} s; model / BEM (each with its own analysis of the scan): " +
           ", ".join(f"{m} {v:.1e}" for m, v in result.cost_ratios.items()))
-    for warning in result.analysis.warnings:
-        print(f"warning: {warning}")
+    for note in result.parameters["warnings"]:
+        print(f"note: {note}")
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     result.to_csv(out / "validation.csv")
@@ -81,4 +85,13 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    with warnings.catch_warnings(record=True) as caught:  # the library's notes, one line each
+        warnings.simplefilter("always", AsperityWarning)
+        try:
+            main()
+        except (ValueError, TypeError) as err:  # a file without size, a bad unit, ...: one line
+            print(f"validate_surface.py: error: {' '.join(str(err).split())} (give: scan size unit)", file=sys.stderr)
+            sys.exit(2)
+        finally:
+            for w in caught:
+                print(f"note: {w.message}", file=sys.stderr)

@@ -43,3 +43,19 @@ def test_floats_round_trip_exactly(values):
     text = columns_to_csv({"v": np.array(values)})
     back = [float(r[0]) for r in list(csv.reader(io.StringIO(text)))[1:]]
     assert [repr(v) for v in back] == [repr(float(v)) for v in values]
+
+
+def test_writing_into_a_missing_directory_names_the_path(tmp_path):
+    """Found by a review: ``to_csv('nodir/x.csv')`` raised FileNotFoundError naming the
+    temporary file; every writer now says which directory is missing, naming the argument."""
+    import asperity
+    from asperity.heights.samples import write_samples
+    from asperity.studies.table1 import write_table1_csv
+
+    target = str(tmp_path / "nodir" / "x.csv")
+    for write in (lambda: asperity.load_curve([1.0], 0.01, 1000.0).to_csv(target),
+                  lambda: write_table1_csv(target, rows=[]),
+                  lambda: write_samples(target, [1.0, 2.0, 3.0])):
+        with pytest.raises(ValueError, match=r"x.csv': the directory '.*nodir' does not exist"):
+            write()
+    assert not (tmp_path / "nodir").exists()

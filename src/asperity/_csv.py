@@ -21,7 +21,7 @@ import numpy as np
 
 from ._atomic import atomic_write
 from ._optional import require
-from ._validation import check_path
+from ._validation import check_output_path
 
 __all__ = ["table_to_csv", "rows_to_csv", "columns_to_csv", "columns_to_dataframe"]
 
@@ -39,7 +39,7 @@ def _deliver(text: str, path_or_buffer) -> str | None:
     if hasattr(path_or_buffer, "write"):
         path_or_buffer.write(text)
     else:
-        atomic_write(check_path(path_or_buffer, "path_or_buffer"), text)
+        atomic_write(check_output_path(path_or_buffer, "path_or_buffer"), text)
     return None
 
 

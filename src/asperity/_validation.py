@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation_files import IMAGE_FORMATS, check_image, check_path
+from ._validation_files import IMAGE_FORMATS, check_image, check_output_path, check_path
 from ._validation_files import short_repr as _short_repr
 from .units import to_si
 
@@ -37,6 +37,7 @@ __all__ = [
     "check_integer",
     "check_1d",
     "check_path",
+    "check_output_path",
     "check_image",
     "IMAGE_FORMATS",
     "check_finite_result",

@@ -5,7 +5,7 @@ Part of the input checks of :mod:`asperity._validation` (which re-exports them).
 
 from __future__ import annotations
 
-__all__ = ["IMAGE_FORMATS", "check_path", "check_image", "short_repr"]
+__all__ = ["IMAGE_FORMATS", "check_path", "check_output_path", "check_image", "short_repr"]
 
 
 def short_repr(value) -> str:
@@ -39,6 +39,21 @@ def check_path(value, name: str, *, directory: bool = False) -> str:
     return text
 
 
+def check_output_path(value, name: str, *, directory: bool = False) -> str:
+    """A file (or directory) to be written: :func:`check_path`, and its parent directory exists.
+
+    Refusing a missing directory here names the path the user gave (the temporary file of
+    :func:`asperity._atomic.atomic_path` would otherwise appear in a FileNotFoundError).
+    """
+    import os
+
+    text = check_path(value, name, directory=directory)
+    parent = os.path.dirname(os.path.abspath(text))
+    if not os.path.isdir(parent):
+        raise ValueError(f"{name} = {text!r}: the directory {os.path.dirname(text) or parent!r} does not exist")
+    return text
+
+
 #: Image formats the plotting functions write (matplotlib's Agg, PDF, SVG and PS back ends).
 IMAGE_FORMATS = ("png", "pdf", "svg", "svgz", "eps", "ps", "jpg", "jpeg", "tif", "tiff", "webp")
 
@@ -48,7 +63,7 @@ def check_image(path, fmt=None, name: str = "path") -> tuple[str, str]:
     extension of ``path`` (png without one), as ``(path, fmt)``; errors name ``name`` or ``fmt``."""
     import os
 
-    path = check_path(path, name)
+    path = check_output_path(path, name)
     if fmt is None:
         fmt, what = os.path.splitext(path)[1][1:].lower() or "png", f"{name} (its extension)"
     elif isinstance(fmt, str):

@@ -85,6 +85,14 @@ def test_outputs(seeds, tmp_path):
     assert r.deviation("detected") == pytest.approx(np.max(np.abs(r.columns()["dev_detected"])))
     with pytest.raises(ValueError):
         r.deviation("bogus")
+    with pytest.raises(ValueError, match="GW's methods are 'spectral' and 'detected'"):
+        r.deviation("gw")
+    lightest = float(np.min(r.columns()["fraction_bem"]))
+    with pytest.raises(ValueError, match=f"no load has a boundary-element area fraction up to {lightest / 2:g}"):
+        r.deviation("spectral", up_to=lightest / 2)  # found by a review: a silent NaN
+    for bad in (0.0, -1.0, 2.0, float("nan")):
+        with pytest.raises(ValueError, match="up_to"):
+            r.deviation("spectral", up_to=bad)
     pytest.importorskip("matplotlib")
     r.plot(tmp_path / "v.png")
     assert (tmp_path / "v.png").read_bytes()[:4] == b"\x89PNG"

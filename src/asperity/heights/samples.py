@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from .._validation import as_float_array, check_path, check_text
+from .._validation import as_float_array, check_output_path, check_path, check_text
 
 __all__ = ["MIN_SAMPLES", "read_samples", "write_samples", "check_samples", "sample_moments", "standardise"]
 
@@ -108,7 +108,7 @@ def write_samples(path, samples, header: str = "z") -> None:
     """
     from .._atomic import atomic_write
 
-    path, header = check_path(path, "path"), check_text(header, "header")
+    path, header = check_output_path(path, "path"), check_text(header, "header")
     z = check_samples(samples)
     atomic_write(path, header + "\n" + "".join(f"{x!r}\n" for x in z.tolist()))
 

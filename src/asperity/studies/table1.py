@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validation import check_finite_result, check_path, check_scalar_poisson, check_scalar_positive
+from .._validation import check_finite_result, check_output_path, check_scalar_poisson, check_scalar_positive
 from ..groups import load_scale
 from ._common import model, write_csv
 
@@ -43,7 +43,7 @@ def write_table1_csv(path, rows=None) -> list[dict]:
     ``path`` is a file name; ``rows`` (default: :func:`table1_rows`) a list of dicts with
     the keys :data:`TABLE1_COLUMNS`.
     """
-    path = check_path(path, "path")
+    path = check_output_path(path, "path")
     if rows is not None and not (isinstance(rows, list | tuple) and all(
             isinstance(r, dict) and set(TABLE1_COLUMNS) <= set(r) for r in rows)):
         raise TypeError(f"rows must be a list of dicts with the keys {', '.join(TABLE1_COLUMNS)}, got "

@@ -27,7 +27,7 @@ import os
 import sys
 
 from .._optional import require
-from .._validation import check_path
+from .._validation import check_output_path
 from .compute import compute_chunk
 from .spec import make_spec
 from .store import open_result, open_store
@@ -257,7 +257,7 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
     parameters = dict(alpha=alpha, beta=beta, gamma=gamma, nu=nu, h_over_b=h_over_b, tau_f1=tau_f1,
                       tau_f2=tau_f2, a1=a1, a2=a2, material=material, sigma_s=sigma_s, R=R, eta=eta, area=area)
     if out is not None:
-        out = check_path(out, "out", directory=str(out).endswith(".zarr"))
+        out = check_output_path(out, "out", directory=str(out).endswith(".zarr"))
     spec = make_spec(parameters, points=points, P=P, d=d, chunk_sets=chunk_sets)
     if not (scheduler is None or isinstance(scheduler, str) or hasattr(scheduler, "submit")):
         raise ValueError(f"scheduler must be None, 'serial', 'local', a scheduler address or a distributed.Client, "

@@ -43,6 +43,7 @@ import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._json import dumps
+from .._validation import check_scalar_positive
 from ..materials import as_material
 from ..persson import rms_slope
 from ..physical import PhysicalContact
@@ -129,9 +130,28 @@ class SurfaceValidation:
 
     def deviation(self, method: str = "spectral", *, up_to: float = 0.2) -> float:
         """Largest :math:`|A/A_{BEM} - 1|` of ``method`` (:attr:`methods`) over loads whose BEM
-        area fraction is at most ``up_to`` (NaN if there is none)."""
+        area fraction is at most ``up_to``.
+
+        Raises
+        ------
+        ValueError
+            For a method not compared (GW's are ``'spectral'`` and ``'detected'``), an
+            ``up_to`` outside (0, 1], or when no load has a boundary-element area fraction up
+            to ``up_to``.
+        """
         if method not in self.methods:
-            raise ValueError(f"method must be one of {self.methods}, got {method!r}")
+            gw = " (GW's methods are 'spectral' and 'detected')" if method == "gw" else ""
+            raise ValueError(f"method must be one of {self.methods}{gw}, got {method!r}")
+        up_to = check_scalar_positive(up_to, "up_to")
+        if up_to > 1.0:
+            raise ValueError(f"up_to (a real-area fraction) must lie in (0, 1], got {up_to!r}")
+        dev = self._deviation(method, up_to)
+        if math.isnan(dev):
+            raise ValueError(f"no load has a boundary-element area fraction up to {up_to:g} (the smallest is "
+                             f"{float(np.min(self.table['fraction_bem'])):.3g}): give a larger up_to or lighter loads")
+        return dev
+
+    def _deviation(self, method: str, up_to: float) -> float:
         keep = self.table["fraction_bem"] <= up_to
         dev = np.abs(self.table[f"dev_{method}"][keep])
         return float(dev.max()) if dev.size else math.nan
@@ -154,7 +174,7 @@ class SurfaceValidation:
         """Plain dictionary for strict JSON (NaN and infinity as None)."""
         return {"parameters": plain(self.parameters), "interaction": self.interaction, "models": list(self.models),
                 "costs": plain({**self.costs, "ratio": self.cost_ratio, "ratios": self.cost_ratios}),
-                "max_deviation_up_to_20pc": {m: plain(self.deviation(m)) for m in self.methods},
+                "max_deviation_up_to_20pc": {m: plain(self._deviation(m, 0.2)) for m in self.methods},
                 "summits": None if self.analysis is None else self.analysis.to_dict(),
                 "table": {k: [plain(x) for x in v.tolist()] for k, v in self.columns().items()}}
 
