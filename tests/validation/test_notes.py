@@ -93,3 +93,22 @@ def test_validate_surface_puts_the_notes_in_its_parameters():
     notes = r.parameters["warnings"]
     assert any(n.startswith("GW (spectral summits): up to") for n in notes)
     assert any(n.startswith("the real area of BGT exceeds the nominal area from P = 0.5 N") for n in notes)
+
+
+def test_averaging_that_drops_points_is_noted():
+    """Found by a review: ``--grid`` silently cropped a 160 x 96 scan to 159 x 96 points
+    (and the nominal area with it); a grid that divides the scan says nothing."""
+    pytest.importorskip("ContactMechanics")
+    from asperity.validation import validate_surface
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ImportWarning)
+        st = pytest.importorskip("SurfaceTopography")
+    h = 1e-9 * np.random.default_rng(1).standard_normal((100, 60))
+    topo = st.Topography(h, (4e-6, 2.4e-6), unit="m")
+    r = validate_surface(topo, [1e-3], material="Au", models="persson", grid=34)
+    assert tuple(r.parameters["nb_grid_pts"]) == (33, 20)
+    assert ("grid=34: the 100 x 60 scan is averaged over 3 x 3 blocks; the points beyond whole blocks are dropped: "
+            "99 x 60 points, 3.96e-06 x 2.4e-06 m, are compared") in r.parameters["warnings"]
+    whole = validate_surface(topo, [1e-3], material="Au", models="persson", grid=50)
+    assert not any(n.startswith("grid=") for n in whole.parameters["warnings"])

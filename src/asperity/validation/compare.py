@@ -257,7 +257,8 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     topo, source = _topography(surface, read_kwargs)
     analysis, t_analysis = None, 0.0
     try:
-        topo = subsample(topo if topo.unit in (None, "m") else topo.to_unit("m"), grid)
+        full = topo if topo.unit in (None, "m") else topo.to_unit("m")
+        topo = subsample(full, grid)
         if "gw" in models:
             start = time.perf_counter()
             analysis = analyse_surface(topo)
@@ -265,7 +266,7 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     except ValueError as err:
         raise ValueError(f"{source}: {err}") if source else err from None
     A0 = float(np.prod(topo.physical_sizes))
-    contacts, notes = {}, []
+    contacts, notes = {}, _cropped(full, topo, grid)
     if "gw" in models and mat.b is None:  # it scales the groups only: no adhesion, no friction here
         mat = dataclasses.replace(mat, b=NOMINAL_B)
         notes.append(f"material {mat.name!r} has no Burgers vector b: the GW model uses b = {NOMINAL_B:g} m, on which "
@@ -338,3 +339,16 @@ def _slope(topo):
         return rms_slope(topo)
     except ValueError:
         return None
+
+
+def _cropped(full, averaged, grid) -> list[str]:
+    """A note when ``grid`` averaging dropped the rows or columns beyond whole blocks."""
+    if tuple(full.nb_grid_pts) == tuple(averaged.nb_grid_pts) or \
+            np.allclose(full.physical_sizes, averaged.physical_sizes, rtol=1e-12):
+        return []
+    f = math.ceil(max(full.nb_grid_pts) / grid)
+    kept = " x ".join(f"{n * f}" for n in averaged.nb_grid_pts)
+    sizes = " x ".join(f"{float(x):.4g}" for x in averaged.physical_sizes)
+    lost = " and periodicity" if full.is_periodic and not averaged.is_periodic else ""
+    return [f"grid={grid}: the {full.nb_grid_pts[0]} x {full.nb_grid_pts[1]} scan is averaged over {f} x {f} blocks; "
+            f"the points beyond whole blocks are dropped{lost}: {kept} points, {sizes} m, are compared"]
