@@ -14,8 +14,8 @@ __all__ = ["plot_validation"]
 
 #: Line style and label of each area estimate.
 _STYLES = {"spectral": ("b^--", "GW, spectral summits"), "detected": ("rs:", "GW, detected summits"),
-           "icha": ("gD-", "ICHA (detected summits)"), "persson": ("m-", "Persson"),
-           "bgt": ("c--", "BGT light-load asymptote")}
+           "icha": ("gD-", "ICHA (detected summits)"), "persson": ("mv-", "Persson"),
+           "bgt": ("c<--", "BGT light-load asymptote")}  # every one with markers: a single load is seen too
 
 
 def plot_validation(result, path, fmt: str | None = None) -> None:
