@@ -52,10 +52,7 @@ def _first_and_second(material_, material2):
         if second is not None:
             raise ValueError(f"material {first.name}/{second.name} is already a pair: give the second body "
                              "either in material ('A/B') or as material2, not both")
-        try:
-            second = as_material(material2, "material2")
-        except ValueError as err:
-            raise ValueError(f"material2: {err}") from None
+        second = as_material(material2, "material2")  # its errors start with "material2: "
         if second.bodies:
             raise ValueError(f"material2 must be one body, got the pair {second.name!r}")
     return first, second, pair_w

@@ -253,7 +253,7 @@ def _pair_b(first: Material, second: Material, b):
     known = {x for x in (first.b, second.b) if x is not None}
     if len(known) > 1 and not math.isclose(first.b, second.b, rel_tol=1e-9):
         raise ValueError(f"{first.name!r} and {second.name!r} have different Burgers vectors "
-                         f"({first.b:.4g} m, {second.b:.4g} m); pass b= explicitly")
+                         f"({first.b:.4g} m, {second.b:.4g} m); pass b= explicitly (command line: --b)")
     return first.b if first.b is not None else second.b
 
 

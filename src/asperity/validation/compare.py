@@ -274,7 +274,14 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     if "gw" in models:
         for method in METHODS:
             summits = getattr(analysis, method)
-            contacts[method] = PhysicalContact(mat, summits.surface(A0), adhesion=False, interaction=interaction)
+            try:
+                contacts[method] = PhysicalContact(mat, summits.surface(A0), adhesion=False, interaction=interaction)
+            except ValueError as err:
+                if "interaction" in str(err):
+                    raise
+                raise ValueError(f"{source or 'surface'}: its {method} summit parameters give no GW surface ({err}): "
+                                 "too few summits or too little roughness; compare without GW (models=...; command line: "
+                                 "--model icha,persson)") from None
     bem = bem_contact(topo, P, E_star=mat.E_star, periodic=periodic, tolerance=tolerance, maxiter=maxiter,
                       progress=progress)
     table = {"P_N": bem.P, "p_Pa": bem.P / A0, "fraction_bem": bem.area_fraction, "area_bem_m2": bem.area,
