@@ -280,8 +280,8 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
                 if "interaction" in str(err):
                     raise
                 raise ValueError(f"{source or 'surface'}: its {method} summit parameters give no GW surface ({err}): "
-                                 "too few summits or too little roughness; compare without GW (models=...; command line: "
-                                 "--model icha,persson)") from None
+                                 "too few summits or too little roughness; compare without GW "
+                                 "(models=...; command line: --model icha,persson)") from None
     bem = bem_contact(topo, P, E_star=mat.E_star, periodic=periodic, tolerance=tolerance, maxiter=maxiter,
                       progress=progress)
     table = {"P_N": bem.P, "p_Pa": bem.P / A0, "fraction_bem": bem.area_fraction, "area_bem_m2": bem.area,
