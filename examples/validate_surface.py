@@ -90,7 +90,7 @@ if __name__ == "__main__":
         try:
             main()
         except (ValueError, TypeError) as err:  # a file without size, a bad unit, ...: one line
-            print(f"validate_surface.py: error: {' '.join(str(err).split())} (give: scan size unit)", file=sys.stderr)
+            print(f"validate_surface.py: error: {' '.join(str(err).split())}", file=sys.stderr)
             sys.exit(2)
         finally:
             for w in caught:

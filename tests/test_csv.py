@@ -56,6 +56,9 @@ def test_writing_into_a_missing_directory_names_the_path(tmp_path):
     for write in (lambda: asperity.load_curve([1.0], 0.01, 1000.0).to_csv(target),
                   lambda: write_table1_csv(target, rows=[]),
                   lambda: write_samples(target, [1.0, 2.0, 3.0])):
-        with pytest.raises(ValueError, match=r"x.csv': the directory '.*nodir' does not exist"):
+        with pytest.raises(ValueError, match=r"x.csv': '.*nodir' does not exist"):
             write()
     assert not (tmp_path / "nodir").exists()
+    (tmp_path / "file").write_text("")
+    with pytest.raises(ValueError, match=r"'.*file' is a file, not a directory"):
+        write_samples(str(tmp_path / "file" / "x.txt"), [1.0, 2.0, 3.0])

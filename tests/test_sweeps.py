@@ -376,3 +376,24 @@ def test_a_list_of_points_may_repeat_values():
     ds = asperity.sweep(points={"alpha": [0.01, 0.01], "beta": [1000.0, 300.0]}, P=[1.0], scheduler="serial")
     for i, beta in enumerate((1000.0, 300.0)):
         assert ds.mu.values[i, 0] == asperity.Model(0.01, beta).load_curve([1.0]).mu[0]
+
+
+def test_a_zarr_path_with_a_trailing_slash_is_the_directory(tmp_path, serial):
+    """Found by a review: ``out='s.zarr/'`` put the partial store inside the target and the
+    finished sweep was deleted; the slash now names the same directory as without it."""
+    out = tmp_path / "s.zarr"
+    ds = asperity.sweep(**grid(out=str(out) + "/"))
+    assert out.is_dir() and not os.path.exists(str(out) + ".partial")
+    assert_same(ds.load(), serial)
+    ds.close()
+
+
+def test_an_error_of_the_computation_is_not_called_a_write_error(tmp_path, monkeypatch):
+    """Only the store's own file errors become 'cannot write the sweep'."""
+    from asperity.sweeps import run as run_module
+
+    def broken(*args, **kwargs):
+        raise NotImplementedError("a bug in a chunk")
+    monkeypatch.setattr(run_module, "compute_chunk", broken)
+    with pytest.raises(NotImplementedError, match="a bug in a chunk"):
+        asperity.sweep(**grid(out=str(tmp_path / "b.nc")))

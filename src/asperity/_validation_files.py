@@ -50,7 +50,8 @@ def check_output_path(value, name: str, *, directory: bool = False) -> str:
     text = check_path(value, name, directory=directory)
     parent = os.path.dirname(os.path.abspath(text))
     if not os.path.isdir(parent):
-        raise ValueError(f"{name} = {text!r}: the directory {os.path.dirname(text) or parent!r} does not exist")
+        what = "is a file, not a directory" if os.path.exists(parent) else "does not exist"
+        raise ValueError(f"{name} = {text!r}: {os.path.dirname(text) or parent!r} {what}")
     return text
 
 

@@ -1,5 +1,6 @@
 """``--plot``: the figure, and that a failing plot writes nothing."""
 
+import numpy as np
 import pytest
 
 from .helpers import AU, MODEL, one_line_error, run
@@ -219,8 +220,8 @@ def test_heat_map_names_the_grid_value_it_draws(capsys, tmp_path, sweep_file):
     path = tmp_path / "x.png"
     code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=9",
                        "-o", str(path))
-    assert code == 0 and err.strip() == ("asperity: note: --at P=9: the sweep has no P = 9; its nearest grid value, "
-                                         "10, is drawn")
+    assert code == 0 and err.strip() == ("asperity: note: --at P=9.0: the sweep has no P = 9.0; its nearest grid "
+                                         "value, 10.0, is drawn")
     code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=10",
                        "-o", str(path))
     assert code == 0 and err == ""
@@ -248,7 +249,32 @@ def test_dash_output_is_standard_output_and_an_input_is_never_overwritten(capsys
     data.write_text("P,F\n" + "".join(f"{p},{0.3 * p + 1}\n" for p in range(1, 9)))
     before = data.read_bytes()
     for option in ("-o", "--plot"):
-        target = str(data) if option == "-o" else str(data)
-        code, _, err = run(capsys, "fit", str(data), "--model", "amontons", option, target)
+        code, _, err = run(capsys, "fit", str(data), "--model", "amontons", option, str(data))
         assert one_line_error(code, err, "is the input file"), err
         assert data.read_bytes() == before
+
+
+def test_dash_is_no_image_nor_sweep_and_summit_files_are_inputs(capsys, tmp_path, monkeypatch):
+    """Found by a review: ``--plot -`` and ``sweep --out -`` wrote files named '-', and
+    ``--heights empirical:z.txt -o z.txt`` replaced the summit heights; ``-o -`` on a
+    terminal is the table, as without ``-o``."""
+    import argparse
+
+    from asperity.cli import _output
+
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, "load", *MODEL, "--P", "1", "--plot", "-")
+    assert one_line_error(code, err, "--plot -: an image cannot go to standard output")
+    code, _, err = run(capsys, "sweep", "--alpha", "0.01", "--beta", "1000", "--P", "1", "--out", "-",
+                       "--scheduler", "serial")
+    assert one_line_error(code, err, "not standard output")
+    z = tmp_path / "z.txt"
+    z.write_text("z\n" + "".join(f"{v}\n" for v in np.random.default_rng(0).standard_normal(40)))
+    before = z.read_bytes()
+    code, _, err = run(capsys, "load", *MODEL, "--P", "1", "--heights", f"empirical:{z}", "-o", str(z))
+    assert one_line_error(code, err, "is the input file") and z.read_bytes() == before
+    assert not (tmp_path / "-").exists()
+    monkeypatch.setattr(_output.sys.stdout, "isatty", lambda: True, raising=False)
+    for output in (None, "-"):
+        assert _output.output_format(argparse.Namespace(format=None, output=output)) == "table"
+    assert _output.output_format(argparse.Namespace(format=None, output="x.csv")) == "csv"

@@ -112,3 +112,19 @@ def test_averaging_that_drops_points_is_noted():
             "99 x 60 points, 3.96e-06 x 2.4e-06 m, are compared") in r.parameters["warnings"]
     whole = validate_surface(topo, [1e-3], material="Au", models="persson", grid=50)
     assert not any(n.startswith("grid=") for n in whole.parameters["warnings"])
+
+
+def test_the_averaging_note_counts_points_not_metres():
+    """Found by a review: sizes compared with numpy's default atol (1e-8 m) hid the note on
+    scans smaller than ~10 um."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ImportWarning)
+        st = pytest.importorskip("SurfaceTopography")
+    from asperity.validation.bem import subsample
+    from asperity.validation.compare import _cropped
+
+    h = np.random.default_rng(2).standard_normal((101, 101)) * 1e-10
+    full = st.Topography(h, (1e-7, 1e-7), periodic=True, unit="m")
+    notes = _cropped(full, subsample(full, 50), 50)
+    assert len(notes) == 1 and "the points beyond whole blocks are dropped and periodicity" in notes[0]
+    assert _cropped(full, subsample(full, 101), 101) == []

@@ -38,7 +38,7 @@ def output_format(args, piped: str = "csv") -> str:
     """``--format``, or the default: ``table`` on a terminal, ``piped`` otherwise."""
     if args.format:
         return args.format
-    return "table" if (args.output is None and sys.stdout.isatty()) else piped
+    return "table" if (args.output in (None, "-") and sys.stdout.isatty()) else piped
 
 
 def format_json(value, *, indent: int | None = None) -> str:
@@ -109,9 +109,12 @@ def _target(path: str, what: str):
 def _not_an_input(args, targets) -> None:
     """Refuse an output path that names one of the command's input files (it would be replaced)."""
     inputs = []
-    for name in ("file", "data", "store", "surface"):
+    for name in ("file", "data", "store", "surface", "points"):
         value = getattr(args, name, None)
         inputs += [v for v in (value if isinstance(value, list) else [value]) if isinstance(v, str)]
+    heights = getattr(args, "heights", None)  # empirical:FILE and best:FILE read summit heights
+    if isinstance(heights, str) and heights.partition(":")[0].strip().lower() in ("empirical", "best"):
+        inputs.append(heights.partition(":")[2])
     for option, path in targets:
         if not path or not os.path.exists(path):
             continue
@@ -140,6 +143,8 @@ def write_outputs(text: str, args, plot=None) -> None:
     plot_path = getattr(args, "plot", None)
     output = None if args.output == "-" else args.output  # '-': standard output, as usual
     _not_an_input(args, (("-o", output), ("--plot", plot_path)))
+    if plot is not None and plot_path == "-":
+        raise UsageError("--plot -: an image cannot go to standard output; give a file name")
     if plot is not None and plot_path and image_format(plot_path) not in IMAGE_FORMATS:
         raise UsageError(f"--plot {plot_path!r}: {image_format(plot_path)!r} is not an image format; give a file "
                          f"name ending in .{', .'.join(IMAGE_FORMATS)}")

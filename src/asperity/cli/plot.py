@@ -88,8 +88,8 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
     for name, wanted in at.items():  # the nearest grid value: say so when it is not the one asked for
         got = float(var[name].values)
         if not math.isclose(got, wanted, rel_tol=1e-9, abs_tol=1e-300):
-            warnings.warn(f"--at {name}={wanted:g}: the sweep has no {name} = {wanted:g}; its nearest grid value, "
-                          f"{got:g}, is drawn", AsperityWarning, stacklevel=2)
+            warnings.warn(f"--at {name}={wanted!r}: the sweep has no {name} = {wanted!r}; its nearest grid value, "
+                          f"{got!r}, is drawn", AsperityWarning, stacklevel=2)
     left = [d for d in var.dims if d not in (x, y)]
     if left:
         raise UsageError(f"{z} also varies along {', '.join(left)}: fix it with --at "

@@ -10,6 +10,7 @@ dimension of the grid.  ``--points FILE.csv`` lists the sets instead.  The resul
 from __future__ import annotations
 
 import argparse
+import os
 
 from ..quantities import MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 from ._args import UsageError, output_file, parse_list, quantity_list
@@ -43,9 +44,17 @@ ALIASES = {"--sigma-s": ("--sigma",), "--R": ("--radius",), "--eta": ("--density
 
 
 def _store_path(text: str) -> str:
-    """argparse type of ``--out``: a file name, or a ``.zarr`` directory (the library then says
-    whether an existing one holds this sweep)."""
-    return text if text.rstrip("/").endswith(".zarr") and text.strip("/") else output_file(text)
+    """argparse type of ``--out``: a file name, or a ``.zarr`` directory (trailing slashes
+    dropped; the library then says whether an existing one holds this sweep); not ``-``."""
+    if text == "-":
+        raise argparse.ArgumentTypeError("a sweep is a file or a directory, not standard output ('-')")
+    name = text.rstrip("/") if text.rstrip("/").endswith(".zarr") else text
+    if not name.endswith(".zarr"):
+        return output_file(name)
+    parent = os.path.dirname(name)
+    if parent and not os.path.isdir(parent):
+        raise argparse.ArgumentTypeError(f"{text!r}: the directory {parent!r} does not exist")
+    return name
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

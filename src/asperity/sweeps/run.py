@@ -257,6 +257,9 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
     parameters = dict(alpha=alpha, beta=beta, gamma=gamma, nu=nu, h_over_b=h_over_b, tau_f1=tau_f1,
                       tau_f2=tau_f2, a1=a1, a2=a2, material=material, sigma_s=sigma_s, R=R, eta=eta, area=area)
     if out is not None:
+        text = os.fspath(out) if isinstance(out, os.PathLike) else out
+        if isinstance(text, str) and text.rstrip("/").endswith(".zarr"):
+            out = text.rstrip("/")  # 'map.zarr/' is the directory map.zarr (its partial beside it)
         out = check_output_path(out, "out", directory=str(out).endswith(".zarr"))
     spec = make_spec(parameters, points=points, P=P, d=d, chunk_sets=chunk_sets)
     if not (scheduler is None or isinstance(scheduler, str) or hasattr(scheduler, "submit")):
@@ -270,11 +273,11 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
         client, close = _client(scheduler) if todo else (None, None)  # before any file is made
         bar = None
         try:
-            store.start()
+            _on_store(store.start)
             bar = _progress(sum(_sets(spec, k) for k in todo), progress)
 
             def done(k, result):
-                store.write(k, result)
+                _on_store(store.write, k, result)
                 if bar is not None:
                     bar.update(_sets(spec, k))
             if client is None:
@@ -286,19 +289,33 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
                 close()
             if bar is not None:
                 bar.close()
-    except (OSError, RuntimeError) as err:  # the store's file: a full disk, say (HDF error)
+    except _StoreFailure as failure:  # the store's file: a full disk, say (HDF error)
         _close_quietly(store)
-        where = store.path or "memory"
-        raise ValueError(f"cannot write the sweep to {where} ({type(err).__name__}: {' '.join(str(err).split())})"
-                         + ("; the chunks written are kept for resume=True (--resume)" if store.path else "")) from None
+        err = failure.__cause__
+        raise ValueError(f"cannot write the sweep to {store.path} ({type(err).__name__}: {' '.join(str(err).split())})"
+                         "; the chunks written are kept for resume=True (--resume)") from None
     except BaseException:
         store.close()
         raise
     try:
-        return store.finish()
-    except (OSError, RuntimeError) as err:
+        return _on_store(store.finish)
+    except _StoreFailure as failure:
+        err = failure.__cause__
         raise ValueError(f"cannot finish the sweep at {store.path} ({type(err).__name__}: "
                          f"{' '.join(str(err).split())})") from None
+
+
+class _StoreFailure(Exception):
+    """An OSError or RuntimeError (netCDF4's 'HDF error') raised by the store itself, not by the
+    computation; its ``__cause__`` is the original."""
+
+
+def _on_store(method, *args):
+    """``method(*args)`` of a store, its file errors raised as :class:`_StoreFailure`."""
+    try:
+        return method(*args)
+    except (OSError, RuntimeError) as err:
+        raise _StoreFailure() from err
 
 
 def _close_quietly(store) -> None:

@@ -272,8 +272,24 @@ def _stored_fingerprint(path: str, zarr: bool) -> str | None:
 
 
 def store_bytes(spec: SweepSpec) -> int:
-    """Bytes the results of ``spec`` take, at least: 8 per value of every variable, 4 per
-    character of the message of every set (:data:`MESSAGE_CHARS`)."""
+    r"""Bytes the results of a sweep take, at least (what the room checks of :func:`open_store` use).
+
+    .. math:: B = N_{sets}\,ig(8\,(n_{curve}\,m + n_{set}) + 4\,cig)
+
+    with :math:`m` loads (or separations) per curve, :math:`n_{curve}` variables per point of
+    a curve and :math:`n_{set}` per set (float64), and :math:`c` = :data:`MESSAGE_CHARS`
+    characters of message per set (fixed-width UTF-32 in Zarr).
+
+    Parameters
+    ----------
+    spec : SweepSpec
+        The sweep (:func:`asperity.sweeps.spec.make_spec`).
+
+    Returns
+    -------
+    int
+        Bytes, the stores' compression and metadata not counted.
+    """
     m = spec.values.size
     per_set = sum(m if where == "curve" else 1 for _, _, where in spec.variables().values()) * 8
     return spec.n_sets * (per_set + 4 * MESSAGE_CHARS)

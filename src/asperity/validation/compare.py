@@ -350,10 +350,11 @@ def _slope(topo):
 
 def _cropped(full, averaged, grid) -> list[str]:
     """A note when ``grid`` averaging dropped the rows or columns beyond whole blocks."""
-    if tuple(full.nb_grid_pts) == tuple(averaged.nb_grid_pts) or \
-            np.allclose(full.physical_sizes, averaged.physical_sizes, rtol=1e-12):
+    if grid is None or tuple(full.nb_grid_pts) == tuple(averaged.nb_grid_pts):
         return []
     f = math.ceil(max(full.nb_grid_pts) / grid)
+    if all(n * f == m for n, m in zip(averaged.nb_grid_pts, full.nb_grid_pts, strict=True)):
+        return []
     kept = " x ".join(f"{n * f}" for n in averaged.nb_grid_pts)
     sizes = " x ".join(f"{float(x):.4g}" for x in averaged.physical_sizes)
     lost = " and periodicity" if full.is_periodic and not averaged.is_periodic else ""
