@@ -317,7 +317,10 @@ class CycleIntegrals:
     @property
     def approach_top(self) -> float:
         """Largest separation of the approach tabulation, :data:`~asperity.tabulation.D_MAX` minus
-        the approach law's end: beyond it no asperity touches on approach (every sum is 0)."""
+        the approach law's end.  Beyond it the approach sums are taken as 0: only summits
+        higher than :data:`~asperity.tabulation.D_MAX` standard deviations touch there, a
+        share below :math:`e^{-31}` even for the exponential's heavy tail (the Gaussian's is
+        :math:`10^{-198}`), as every curve of the model neglects them."""
         return D_MAX - float(self.approach_law.u_end)
 
     def approach_tab(self, d_lo: float, d_hi: float) -> Tabulation:
