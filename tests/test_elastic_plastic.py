@@ -226,3 +226,19 @@ def test_critical_penetration_and_plasticity_index():
     assert critical_penetration(alpha, nu, H) == pytest.approx((math.pi * C / 5.68) ** 2 / psi**2, rel=1e-14)
     assert critical_penetration(alpha, nu, H, 3.0) == pytest.approx(
         reference.jg_critical_penetration(alpha, nu, H, 3.0), rel=1e-12)
+
+
+def test_nanometre_summits_whose_contacts_never_reach_a_friction_breakpoint():
+    """Found by a review: with a small beta (R = 10 nm on gold) the Hurtado-Kim radius a2 b
+    (23 um) lies beyond any contact of these asperities, and the law failed at every load
+    ("omega_star must lie in [0, 1e+12]").  The breakpoint is now left out, and the model
+    equals the reference path, which knows nothing of breakpoints."""
+    alpha, beta, nu, H = 0.447, 15.5, 0.44, 0.00194
+    m = Model(alpha, beta, nu=nu, law=JacksonGreen(H))
+    assert len(m.law.breakpoints) < len(JacksonGreenLaw(ModelParameters(alpha, 1000.0, nu=nu), H).breakpoints)
+    d = [-2.0, 0.0, 1.5]
+    curve = m.separation_curve(d)
+    for i, di in enumerate(d):
+        ref = reference.jg_separation_point(di, alpha, beta, nu, H)
+        for key in ("contacts", "P", "F", "area", "plastic"):
+            assert getattr(curve, key)[i] == pytest.approx(ref[key], rel=1e-8), (key, di)

@@ -202,16 +202,22 @@ class JacksonGreenLaw:
 
         Below the area's switch the radius is Hertz's, :math:`\bar u = (\bar a_k/\beta)^2`; above,
         the law's radius exceeds Hertz's, so the crossing lies in :math:`[\bar u_t, (\bar a_k/\beta)^2]`.
+        A crossing beyond the deepest penetration the model reaches, :data:`D_MAX` - :data:`D_MIN`,
+        is left out (a breakpoint radius larger than any contact of these asperities: e.g. the
+        Hurtado-Kim radius :math:`a_2 b` of 23 um on nanometre summits).
         """
-        beta = self.params.beta
+        beta, reach = self.params.beta, D_MAX - D_MIN
         out = []
         for a_k in self.params.friction.breakpoints():
             u_hertz = (a_k / beta) ** 2
             if u_hertz <= self.u_t:
                 out.append(u_hertz)
-            else:
-                out.append(float(optimize.brentq(lambda u, a_k=a_k: self._radius(u) - a_k, self.u_t, u_hertz,
-                                                 xtol=1e-15 * u_hertz, rtol=4 * np.finfo(float).eps)))
+                continue
+            top = min(u_hertz, reach)
+            if self._radius(top) < a_k:
+                continue
+            out.append(float(optimize.brentq(lambda u, a_k=a_k: self._radius(u) - a_k, self.u_t, top,
+                                             xtol=1e-15 * top, rtol=4 * np.finfo(float).eps)))
         return tuple(out)
 
     def evaluate(self, u_bar):
