@@ -2,6 +2,7 @@
 
 import json
 import math
+import warnings
 
 import mpmath as mp
 import numpy as np
@@ -316,3 +317,22 @@ def test_validity_warnings_above_ten_percent_of_the_nominal_area():
     assert len(curve.validity_warnings(limit=fraction[0] / 2)) == 1
     with pytest.raises(ValueError, match="limit"):
         curve.validity_warnings(limit=-0.1)
+
+
+def test_three_bodies_and_overflowing_summit_counts_are_refused():
+    """Found by a review: 'Au/Au/Au' was read as gold on the pair Au/Au (E* of three bodies),
+    and an area of 1e300 m^2 gave inf results with no error."""
+    from asperity.bodies import contact_material
+
+    for name in ("Au/Au/Au", "Au/Si/Ni"):
+        with pytest.raises(ValueError, match=r"material must name one body \('Au'\) or two \('A/B'\)"):
+            contact_material(name, w=1.0)
+    with pytest.raises(ValueError, match=r"eta \* area \(the number of summits N\) must be finite"):
+        Surface("2nm", "1um", "1e12/m^2", "1e300m^2")
+    with pytest.raises(ValueError, match=r"the force unit N G b\^2 = .* is not finite"):
+        PhysicalContact(contact_material(E=1e300, nu=0.3, b=1e-10), Surface("2nm", "1um", "1e12/m^2", "1e18m^2"),
+                        adhesion=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        big = PhysicalContact("Au", Surface("2nm", "1um", "1e12/m^2", "1e290m^2")).load_curve([1e-3])
+    assert np.all(np.isfinite([big.F[0], big.area[0], big.contacts[0]]))

@@ -43,6 +43,8 @@ def _first_and_second(material_, material2):
         first, second, pair_w = None, None, None
     elif isinstance(material_, str) and "/" in material_ and \
             material_.strip().lower() not in {n.lower() for n in material_names()}:
+        if material_.count("/") > 1:
+            raise ValueError(f"material must name one body ('Au') or two ('A/B'), got {material_!r}")
         one, _, two = material_.partition("/")  # 'A/B' of two table rows: b may be given below
         first, second, pair_w = as_material(one.strip(), "material"), as_material(two.strip(), "material"), None
     else:

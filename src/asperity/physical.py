@@ -205,6 +205,9 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
                              "(command line: --no-adhesion)")
         self.law, self.hardness, self.h_star = resolve_plasticity(self.material, plasticity, hardness,
                                                                   size_effect, h_star)
+        if not (math.isfinite(self.force_scale) and math.isfinite(self.area_scale)):
+            raise ValueError(f"the force unit N G b^2 = {self.force_scale:g} N is not finite: N = eta * area = "
+                             f"{self.N:g} summits is too many; give a smaller area (or eta)")
         self.plastic_threshold = check_scalar_positive(plastic_threshold, "plastic_threshold", allow_zero=True)
         if self.plastic_threshold > 1.0:
             raise ValueError(f"plastic_threshold must lie in [0, 1], got {plastic_threshold!r}")
@@ -288,7 +291,7 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
     @property
     def force_scale(self) -> float:
         """Force unit N G b^2 (N)."""
-        return self.N * self.G * self.b**2
+        return self.N * (self.G * self.b**2)
 
     @property
     def area_scale(self) -> float:

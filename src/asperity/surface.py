@@ -119,6 +119,9 @@ class Surface:
     def __post_init__(self):
         for name, q in SURFACE_PARAMETERS.items():
             object.__setattr__(self, name, check_scalar_positive(getattr(self, name), name, q.si_unit))
+        if not math.isfinite(self.eta * self.area):
+            raise ValueError(f"eta * area (the number of summits N) must be finite, got eta = {self.eta:g} 1/m^2 and "
+                             f"area = {self.area:g} m^2 (N overflows)")
         if self.source is not None:
             check_text(self.source, "source")
 
