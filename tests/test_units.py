@@ -3,8 +3,11 @@
 import numpy as np
 import pint
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from asperity import units
+from asperity.units import parse_quantity
 
 u = pint.UnitRegistry()
 
@@ -55,3 +58,23 @@ def test_parse_quantity_without_pint(monkeypatch):
 
 def test_to_si_parses_strings():
     assert units.to_si("79GPa", "Pa", "E") == pytest.approx(79e9)
+
+
+@given(st.integers(min_value=-(2**53), max_value=2**53),
+       st.sampled_from([("pm", -12), ("nm", -9), ("um", -6), ("µm", -6), ("mm", -3), ("km", 3), ("GPa", 9)]))
+def test_si_prefixes_scale_integers_exactly(m, prefixed):
+    """Found by a review: '60nm' read as 6.000000000000001e-08 (times the rounded 1e-9) and was
+    refused at the bound 6e-8 m; a decimal prefix now divides by the exact power of ten, so an
+    integer count of the unit is the correctly rounded SI value, as the decimal literal is."""
+    unit, k = prefixed
+    target = "Pa" if unit == "GPa" else "m"
+    assert parse_quantity(f"{m}{unit}", target, "x") == float(f"{m}e{k}")
+
+
+def test_a_positive_exponent_before_a_unit_is_a_number_not_a_complex_literal():
+    assert parse_quantity("1e0J/m^2", "J/m^2", "w") == 1.0
+    assert parse_quantity("1e10J/m^2", "J/m^2", "w") == 1e10
+    assert parse_quantity("1e12/m^2", "1/m^2", "eta") == 1e12
+    assert parse_quantity("2.885Å", "m", "b") == pytest.approx(2.885e-10, rel=1e-15)
+    with pytest.raises(ValueError, match="x must have units compatible with m"):
+        parse_quantity("3J", "m", "x")

@@ -16,6 +16,8 @@ the parameter and the unit expected.
 from __future__ import annotations
 
 import functools
+import math
+import re
 
 import numpy as np
 
@@ -169,6 +171,9 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
     except ImportError:
         raise ValueError(f"{name} = {text!r} has a unit; reading units needs pint: {_INSTALL} "
                          f"(or give a plain number in {_unit_label(unit)})") from None
+    split = _NUMBER_UNIT.match(stripped)
+    if split is not None:  # '60nm', '1e0J/m^2': the number read by Python, the unit by pint
+        return _decimal_scaled(float(split.group(1)), split.group(2), text, unit, name, registry)
     try:
         quantity = registry.parse_expression(stripped)
     except Exception as err:
@@ -178,6 +183,31 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
         return parse_quantity(repr(float(quantity)), unit, name, require_unit=require_unit)
     value = _convert(quantity, unit, name)
     return float(value)
+
+
+#: A number followed by a unit that starts with a letter (not '/', '*' or '^': those go to pint whole).
+_NUMBER_UNIT = re.compile(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(?![eE][+-]?\d)"
+                          r"([A-Za-z\u00b5\u03bc\u00c5\u212b].*)$")
+
+
+def _decimal_scaled(number: float, unit_text: str, text: str, unit: str, name: str, registry) -> float:
+    """``number`` times the unit ``unit_text`` in ``unit``.  A decimal factor (an SI prefix:
+    1e-9 for nm) divides by the exact power of ten instead of multiplying by its rounded
+    reciprocal, so that '60nm' is 6e-08 as '6e-8m' is, not 6.000000000000001e-08."""
+    try:
+        one = registry.parse_expression(unit_text)
+    except Exception as err:
+        raise ValueError(f"{name} = {text!r} is not a quantity with a unit compatible with "
+                         f"{_unit_label(unit)} ({type(err).__name__}: {err})") from None
+    if not is_quantity(one):
+        raise ValueError(f"{name} = {text!r} is not a quantity with a unit compatible with {_unit_label(unit)}")
+    factor = float(_convert(one, unit, name))
+    if factor > 0 and math.isfinite(factor):
+        k = round(math.log10(factor))
+        if abs(k) <= 22 and factor == float(f"1e{k}"):  # 10**|k| is exact up to 1e22
+            with np.errstate(all="ignore"):
+                return number / 10.0 ** -k if k < 0 else number * 10.0 ** k
+    return float(_convert(number * one, unit, name))
 
 
 #: SI prefixes by power of ten, for :func:`format_si`.
