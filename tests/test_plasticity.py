@@ -163,3 +163,17 @@ def test_physical_plastic_column_in_every_export():
 def test_out_of_range_hardness_is_refused_at_construction():
     with pytest.raises(ValueError, match=r"H_over_E .* \(0, 0.142\]"):
         PhysicalContact("Au", GOLD_SURFACE, adhesion=False, plasticity="jackson-green", hardness="20GPa")
+
+
+def test_h_star_zero_is_no_size_effect_and_the_message_names_only_what_lacks():
+    """Found by a review: ``--h-star 0um`` (the help: '0 = no size effect') was refused as a
+    size effect without the Nix-Gao pair, and the message asked for h_star when it was given."""
+    S = Surface("2nm", "1um", "1e12/m^2", "1mm^2")
+    plain = PhysicalContact("Au", S, adhesion=False, plasticity="jackson-green")
+    zero = PhysicalContact("Au", S, adhesion=False, plasticity="jackson-green", h_star="0um")
+    assert zero.hardness == plain.hardness and zero.h_star == 0.0
+    np.testing.assert_array_equal(zero.load_curve([1e-3]).F, plain.load_curve([1e-3]).F)
+    with pytest.raises(ValueError, match=r"give hardness= \(H0, Pa\) \(command line: --hardness\)$"):
+        PhysicalContact("Au", S, adhesion=False, plasticity="jackson-green", h_star="1um")
+    with pytest.raises(ValueError, match=r"give h_star= \(m\) \(command line: --h-star\)$"):
+        PhysicalContact("Au", S, adhesion=False, plasticity="jackson-green", size_effect=True, hardness="200MPa")

@@ -164,23 +164,28 @@ def resolve_plasticity(material: Material, plasticity, hardness, size_effect, h_
     if not isinstance(name, str) or name.strip().lower() not in LAWS:
         raise ValueError(f"plasticity must be a law name, one of {', '.join(LAWS)}, got {plasticity!r}")
     name = name.strip().lower()
+    if h_star is not None:
+        h_star = check_scalar_positive(h_star, "h_star", "m", allow_zero=True)
     if size_effect is None:
-        size_effect = h_star is not None
+        size_effect = h_star is not None and h_star > 0.0  # h_star = 0: no size effect
     if not isinstance(size_effect, bool):
         raise ValueError(f"size_effect must be True, False or None, got {size_effect!r}")
     if not size_effect:
-        if h_star is not None:
+        if h_star:
             raise ValueError("h_star (Nix-Gao length) needs size_effect=True (or None)")
         H = material.H if hardness is None else check_scalar_positive(hardness, "hardness", "Pa")
         h = 0.0
     else:
         H = material.H0 if hardness is None else check_scalar_positive(hardness, "hardness (H0)", "Pa")
-        h = material.h_star if h_star is None else check_scalar_positive(h_star, "h_star", "m", allow_zero=True)
-        if H is None or h is None:
+        h = material.h_star if h_star is None else h_star
+        lacking = [(keyword, option) for value, keyword, option in (
+            (H, "hardness= (H0, Pa)", "--hardness"), (h, "h_star= (m)", "--h-star")) if value is None]
+        if lacking:
+            advice = " and ".join(keyword for keyword, _ in lacking)
+            options = ", ".join(option for _, option in lacking)
             raise ValueError(f"size_effect=True (the size effect) needs the Nix-Gao pair H0 and h_star; material "
-                             f"{material.name!r} "
-                             f"has H0 = {material.H0!r}, h_star = {material.h_star!r}: give hardness= (H0, Pa) "
-                             "and h_star= (m) (command line: --hardness, --h-star)")
+                             f"{material.name!r} has H0 = {material.H0!r}, h_star = {material.h_star!r}: give "
+                             f"{advice} (command line: {options})")
     if LAWS[name].plastic and H is None:
         raise ValueError(f"plasticity={name!r} needs a hardness: material {material.name!r} has none; "
                          "give hardness= (Pa) (command line: --hardness)")

@@ -37,6 +37,10 @@ CASES = [  # (library message, words of the page it must then contain)
                     adhesion=False), ("choose the material custom and give its hardness H",)),
     (lambda: _error(material=dataclasses.replace(material("Au"), H0=None), plasticity="jackson-green",
                     size_effect=True, adhesion=False), ("the size effect", "H0 (size effect) and h*")),
+    (lambda: _error(material=dataclasses.replace(material("Cu"), H0=None), plasticity="jackson-green",
+                    size_effect=True, adhesion=False), ("give its H0 (size effect), or untick the size effect",)),
+    (lambda: _error(material=dataclasses.replace(material("Cu"), h_star=None), plasticity="jackson-green",
+                    size_effect=True, adhesion=False), ("give its h*, or untick the size effect",)),
 ]
 
 

@@ -24,6 +24,9 @@ RULES = (
      "choose the material custom and give its b"),
     (r"give hardness= \(H0, Pa\) and h_star= \(m\)", "choose the material custom and give its H0 (size effect) "
                                                       "and h*, or untick the size effect"),
+    (r"give hardness= \(H0, Pa\)", "choose the material custom and give its H0 (size effect), or untick the size "
+                                   "effect"),
+    (r"give h_star= \(m\)", "choose the material custom and give its h*, or untick the size effect"),
     (r"give hardness= \(Pa\)", "choose the material custom and give its hardness H"),
     (r"size_effect=True \(the size effect\)", "the size effect"),
     (r"use plasticity='jackson-green' without adhesion",
