@@ -47,7 +47,7 @@ def test_separation_and_pulloff_with_heights(capsys):
                        "--heights", "weibull:skew=-0.5", "--format", "json")
     assert code == 0
     ref = asperity.pull_off(0.003, 1000, 1e-3, heights=Weibull(-0.5))
-    assert json.loads(out) == {"pull_off": ref.force, "d": ref.d}
+    assert json.loads(out) == ref.to_dict()
 
 
 @pytest.mark.filterwarnings("ignore::asperity.PlasticityWarning")  # gold this rough yields; the CLI notes it

@@ -15,7 +15,7 @@ def test_pulloff_and_table(capsys):
     assert code == 0
     got = json.loads(out)
     ref = asperity.pull_off(0.003, 1000, 1e-3)
-    assert got["pull_off"] == pytest.approx(ref.force, rel=1e-15) and set(got) == {"pull_off", "d"}
+    assert got["pull_off"] == pytest.approx(ref.force, rel=1e-15) and got == ref.to_dict()
     code, out, _ = run(capsys, "pulloff", "--alpha", "0.003", "--beta", "1000", "--gamma", "1e-3",
                        "--format", "table")
     assert "pull_off" in out.splitlines()[0]
@@ -37,4 +37,4 @@ def test_pulloff_without_adhesion_has_null_separation(capsys):
     # gamma = 0: no tensile force, the separation is undefined (NaN in the API, null in JSON).
     ref = asperity.pull_off(0.01, 1000, 0.0)
     code, out, _ = run(capsys, "pulloff", "--alpha", "0.01", "--beta", "1000", "--gamma", "0", "--format", "json")
-    assert code == 0 and out.strip() == json.dumps({"pull_off": ref.force, "d": None})
+    assert code == 0 and out.strip() == json.dumps({"pull_off": ref.force, "d": None, "exists": False})

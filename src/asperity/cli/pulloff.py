@@ -35,5 +35,5 @@ def run(args) -> None:
     if args.gamma is None:
         raise UsageError("pulloff needs --gamma (the adhesion parameter)")
     po = model_from_args(args).pull_off(args.d_max)
-    row = {"pull_off": po.force, "d": po.d}
+    row = po.to_dict()  # the API's keys: pull_off, d, exists
     write_outputs(format_json(row) if fmt == "json" else format_rows([row], fmt), args)
