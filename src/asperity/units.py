@@ -163,7 +163,8 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
     number = _plain_number(stripped)
     if number is not None:
         if require_unit and unit:
-            raise ValueError(f"{name} needs a unit compatible with {unit} (e.g. '{stripped} {unit}'), "
+            example = stripped if math.isfinite(number) else "1"
+            raise ValueError(f"{name} needs a unit compatible with {unit} (e.g. '{example} {unit}'), "
                              f"got the bare number {text!r}")
         return number
     try:

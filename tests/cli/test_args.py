@@ -188,3 +188,18 @@ def test_output_paths_are_checked(capsys, tmp_path, argv, needle):
     code, out, err = run(capsys, *(a.replace("{tmp}", str(tmp_path)) for a in argv))
     assert one_line_error(code, err, needle) and out == ""
     assert list(tmp_path.iterdir()) == []
+
+
+def test_non_finite_list_items_are_named_by_option_and_text(capsys):
+    """Found by a review: ``--load 'nan N'`` said 'P must be finite ..., got array([nan])' and
+    ``--load nan`` suggested the refused spelling 'nan N'."""
+    from asperity.cli import main
+
+    contact = ["--material", "Au", "--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2", "--area", "1mm^2"]
+    for value, needle in (("nan N", "--load: 'nan N' is not a finite quantity"),
+                          ("1e400N", "--load: '1e400N' is not a finite quantity"),
+                          ("1mN:inf N:3", "--load: 'inf N' is not a finite quantity"),
+                          ("nan", "(e.g. '1 N'), got the bare number 'nan'")):
+        assert main(["load", *contact, "--load", value]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and needle in err, err

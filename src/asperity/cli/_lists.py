@@ -148,8 +148,19 @@ def optional_quantity(text: str | None, unit: str, name: str) -> float | None:
 
 
 def quantity_items(text: str, unit: str, name: str) -> list[float]:
-    """A comma list of quantities (``'10um,5um'``) in ``unit``; empty items are errors."""
-    return [quantity(x, unit, name) for x in _items(text, name)]
+    """A comma list of quantities (``'10um,5um'``) in ``unit``; empty and non-finite items are errors."""
+    return [_finite_quantity(x, unit, name) for x in _items(text, name)]
+
+
+def _finite_quantity(text: str, unit: str, name: str) -> float:
+    """:func:`quantity`, refusing NaN and infinities by the option's name and the text given."""
+    import math
+
+    value = quantity(text, unit, name)
+    if not math.isfinite(value):
+        raise UsageError(f"{name}: {text.strip()!r} is not a finite quantity (NaN, infinite or beyond double "
+                         "precision)")
+    return value
 
 
 def quantity_list(text: str, unit: str, *, log: bool, name: str):
@@ -161,7 +172,7 @@ def quantity_list(text: str, unit: str, *, log: bool, name: str):
 
     if ":" in text:
         start, stop, count = _range_parts(text, name)
-        lo, hi = quantity(start, unit, name), quantity(stop, unit, name)
+        lo, hi = _finite_quantity(start, unit, name), _finite_quantity(stop, unit, name)
         return _spaced(lo, hi, count, log=log, name=name, text=text)
     return np.array(quantity_items(text, unit, name), dtype=float)
 
