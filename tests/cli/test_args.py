@@ -203,3 +203,20 @@ def test_non_finite_list_items_are_named_by_option_and_text(capsys):
         assert main(["load", *contact, "--load", value]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and needle in err, err
+
+
+def test_options_that_would_be_ignored_are_refused(capsys):
+    """Found by a review: ``--no-adhesion --w 1J/m^2`` and ``--law jackson-green
+    --plastic-threshold 0.5`` ran without a word, the option ignored."""
+    from asperity.cli import main
+
+    contact = ["--material", "Au", "--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2", "--area", "1mm^2",
+               "--load", "1mN"]
+    for extra, needle in ((["--no-adhesion", "--w", "1J/m^2"], "--w describe the adhesion, which --no-adhesion"),
+                          (["--no-adhesion", "--sigma0", "1GPa", "--h", "1nm"], "--h, --sigma0 describe the adhesion"),
+                          (["--no-adhesion", "--law", "jackson-green", "--plastic-threshold", "0.5"],
+                           "--plastic-threshold applies to the elastic law")):
+        assert main(["load", *contact, *extra]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and needle in err, err
+    assert main(["load", *contact, "--no-adhesion", "--plastic-threshold", "0.5", "--format", "csv"]) == 0

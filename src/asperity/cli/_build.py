@@ -198,6 +198,14 @@ def contact_from_args(args):
 
     threshold = args.plastic_threshold
     kwargs = {} if threshold is None else {"plastic_threshold": threshold}
+    if args.no_adhesion:  # options that would be silently ignored
+        given = [f"--{n.replace('_', '-')}" for n in ("w", "h", "sigma0") if getattr(args, n, None) is not None]
+        if given:
+            raise UsageError(f"{', '.join(given)} describe the adhesion, which --no-adhesion turns off: give one "
+                             "or the other")
+    if threshold is not None and args.law not in (None, "elastic"):
+        raise UsageError(f"--plastic-threshold applies to the elastic law (the note when asperities pass yield); "
+                         f"--law {args.law} models the yield itself")
     return PhysicalContact(material_from_args(args), surface_from_args(args),
                            friction=friction_from_args(args, physical=True), adhesion=not args.no_adhesion,
                            plasticity=args.law, hardness=optional_quantity(args.hardness, "Pa", "--hardness"),
