@@ -131,3 +131,22 @@ def test_the_above_100_percent_message_names_the_load_where_100_percent_is_passe
         below = contact.load_curve(P[:3])
     first10 = P[int(np.argmax(np.asarray(below.area_fraction) > 0.1))]
     assert f"above 10 % from P = {first10:.4g} N" in below.validity_warnings()[0]
+
+
+def test_a_pull_off_carried_by_less_than_one_asperity_is_noted():
+    """Found by a review: a pull-off of 3e-23 N, carried by 6e-15 asperities on average, was
+    reported like any other.  The note gives the expected number in contact at pull-off,
+    N times the model's contact fraction there (read off the separation curve)."""
+    from asperity.bodies import contact_material
+
+    weak = PhysicalContact(contact_material(E="70GPa", nu=0.2, b="0.25nm", w="0.05J/m^2"),
+                           Surface("2nm", "1um", "1e12/m^2", "1mm^2"))
+    with pytest.warns(asperity.AsperityWarning, match=r"carried by (.*) asperities in contact") as record:
+        po = weak.pull_off()
+    expected = weak.separation_curve([po.d]).contacts[0]
+    assert f"carried by {expected:.3g} asperities" in str(record[0].message) and expected < 1.0
+    strong = PhysicalContact("Au", Surface("2nm", "1um", "1e12/m^2", "1mm^2"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", asperity.AsperityWarning)
+        warnings.simplefilter("ignore", asperity.PlasticityWarning)
+        assert strong.pull_off().exists

@@ -62,6 +62,7 @@ from ._validation import (
     check_positive,
     check_scalar_positive,
 )
+from ._warnings import AsperityWarning
 from .curves import CurveResult, Model
 from .elastic_plastic import LAWS, plastic_fraction
 from .friction_stress import ConstantShear, FrictionLaw
@@ -351,7 +352,15 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
         if d_max is not None:
             d_max = check_scalar_positive(d_max, "d_max")
         po = self.model.pull_off(d_max)
-        area = float(self.model.separation_curve([po.d]).area[0]) * self.area_scale if po.exists else 0.0
+        area = 0.0
+        if po.exists:
+            at = self.model.separation_curve([po.d])
+            area, touching = float(at.area[0]) * self.area_scale, float(at.contacts[0]) * self.N
+            if touching < 1.0:  # an expectation over many surfaces: one of them would show nothing
+                warnings.warn(AsperityWarning(
+                    f"the pull-off force, {po.force * self.force_scale:.3g} N, is carried by {touching:.3g} asperities "
+                    "in contact (an expectation over many such surfaces): fewer than one, so a real contact of this "
+                    "surface would most likely show no pull-off"), stacklevel=2)
         warn_area_fraction(area / self.surface.area, stacklevel=2, where=" at pull-off")
         return PhysicalPullOff(force=po.force * self.force_scale, d=po.d * self.surface.sigma_s,
                                exists=po.exists, dimensionless=po, area=area, nominal_area=self.surface.area)
