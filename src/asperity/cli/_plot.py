@@ -35,13 +35,14 @@ def plot_curve(curve, path: str, fmt: str, *, x: str, title: str, physical: bool
     FigureCanvasAgg(fig)
     ax1, ax2 = fig.subplots(1, 2)
     xs = np.asarray(getattr(curve, x), dtype=float)
+    dots = {"marker": "o", "markersize": 3} if xs.size < 20 else {}  # a point alone is drawn too
     if x == "P":
         xlabel = r"$P$ (N)" if physical else r"$\bar P = P/NGb^2$"
         pos = xs > 0  # mu is defined (and a log axis exists) only under a compressive load
-        ax1.loglog(xs[pos], curve.mu[pos], "k-")
+        ax1.loglog(xs[pos], curve.mu[pos], "k-", **dots)
         ax1.set_xlabel(xlabel)
         ax1.set_ylabel(r"$\mu$")
-        ax2.plot(xs, curve.area, "k-")
+        ax2.plot(xs, curve.area, "k-", **dots)
         ax2.set_yscale(_scale(curve.area))
         ax2.set_xscale("log" if np.all(pos) else "linear")  # tensile loads: a linear load axis
         ax2.set_xlabel(xlabel)
@@ -53,14 +54,14 @@ def plot_curve(curve, path: str, fmt: str, *, x: str, title: str, physical: bool
         pos = curve.P > 0
         drawn = []
         if np.any(pos):
-            drawn += ax1.semilogy(xs[pos], curve.P[pos], "k-", label="compressive $P$")
+            drawn += ax1.semilogy(xs[pos], curve.P[pos], "k-", label="compressive $P$", **dots)
         if np.any(~pos & (curve.P < 0)):
-            drawn += ax1.semilogy(xs[curve.P < 0], -curve.P[curve.P < 0], "r--", label="tensile $-P$")
+            drawn += ax1.semilogy(xs[curve.P < 0], -curve.P[curve.P < 0], "r--", label="tensile $-P$", **dots)
         if any(line.get_label().startswith("tensile") for line in drawn):  # |P| needs saying which is which
             ax1.legend()
         ax1.set_xlabel(xlabel)
         ax1.set_ylabel(r"$|P|$ (N)" if physical else r"$|P|/NGb^2$")
-        ax2.semilogy(xs, curve.F, "k-")
+        ax2.semilogy(xs, curve.F, "k-", **dots)
         ax2.set_xlabel(xlabel)
         ax2.set_ylabel(r"$F$ (N)" if physical else r"$F/NGb^2$")
     fig.suptitle(title)
