@@ -122,3 +122,20 @@ def test_model_functions_take_any_distribution_and_refuse_others():
                  lambda: PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), heights="gaussian")):
         with pytest.raises(ValueError, match="heights must be a HeightDistribution"):
             call()
+
+
+def test_review_findings_on_specs_and_sample_files(tmp_path):
+    """Found by a review: a mixture's deviation 0 was refused against '[0, 1e+06]', and a
+    first line of numbers ('1,2') in a summit file was silently dropped as a header."""
+    from asperity.heights import parse_heights
+    from asperity.heights.samples import read_samples
+
+    for s1 in ("-1", "0", "2e6", "nan"):
+        with pytest.raises(ValueError, match=r"s1 \(component deviation\) must lie in \(0, 1e\+06\]"):
+            parse_heights(f"mixture:w=0.5,m1=0,s1={s1},m2=1,s2=1")
+    path = tmp_path / "z.txt"
+    path.write_text("1,2\n" + "".join(f"{x}\n" for x in range(30)))
+    with pytest.raises(ValueError, match="line 1: expected one number per line, got '1,2'"):
+        read_samples(path)
+    path.write_text("height [nm]\n" + "".join(f"{x}\n" for x in range(30)))
+    assert read_samples(path).size == 30

@@ -188,9 +188,7 @@ class Mixture(GaussianSum):
             raise ValueError("w (weight of the first component) must be > 0 (give the other component "
                              "as the first)")
         m1, m2 = (check_scalar_range(getattr(self, k), k, -1e6, 1e6, what="component mean") for k in ("m1", "m2"))
-        s1, s2 = (check_scalar_range(getattr(self, k), k, 0.0, 1e6, what="component deviation") for k in ("s1", "s2"))
-        if not (s1 > 0 and s2 > 0):
-            raise ValueError(f"s1, s2 (component deviations) must be > 0, got {self.s1!r}, {self.s2!r}")
+        s1, s2 = (_deviation(getattr(self, k), k) for k in ("s1", "s2"))
         mean, var, _, _ = mixture_stats((w, 1 - w), (m1, m2), (s1, s2))
         if abs(mean) > 1e-15 or abs(var - 1.0) > 4e-16:  # standardised already: keep the values (spec round trip)
             sd = math.sqrt(var)
@@ -275,3 +273,14 @@ class KernelGaussian(HeightDistribution):
 
     def panel_sums(self, d, centers, offsets, weights, order: int = 0):
         return mixture_panel_sums(d, centers, offsets, weights, order, *self._parts)
+
+
+def _deviation(value, name: str) -> float:
+    """A component's standard deviation, in (0, 1e6]."""
+    try:
+        s = check_scalar_range(value, name, 0.0, 1e6, what="component deviation")
+    except ValueError:
+        s = None
+    if s is None or s == 0.0:
+        raise ValueError(f"{name} (component deviation) must lie in (0, 1e+06], got {value!r}")
+    return s

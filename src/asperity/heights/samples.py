@@ -72,7 +72,9 @@ def read_samples(path) -> np.ndarray:
         try:
             x = float(text)
         except ValueError:
-            if first:  # a header
+            numeric = all(_is_number(cell) for cell in text.replace(";", ",").split(",")) or \
+                all(_is_number(cell) for cell in text.split())
+            if first and not numeric:  # a header (a row of numbers is not one: several columns)
                 first = False
                 continue
             raise ValueError(f"{name}: line {number}: expected one number per line, "
@@ -85,6 +87,14 @@ def read_samples(path) -> np.ndarray:
         return check_samples(np.array(values, dtype=float), "summit heights")
     except ValueError as err:
         raise ValueError(f"{name}: {err}") from None
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def write_samples(path, samples, header: str = "z") -> None:
