@@ -41,7 +41,7 @@ def test_reading_is_lenient_only_where_stated(tmp_path):
 
 @pytest.mark.parametrize("text, needle", [
     ("1\n2\nabc\n" + "3\n" * 30, "line 3: expected one number per line, got 'abc'"),
-    ("1,2\n" * 30, "line 2: expected one number per line, got '1,2'"),  # line 1: a header
+    ("1,2\n" * 30, "line 1: expected one number per line, got '1,2'"),  # a row of numbers is no header
     ("nan\n" + "1\n" * 30, "line 1: summit heights must be finite"),
     ("1\n" * 30, "all 30 summit heights are equal"),
     ("1\n2\n3\n", "at least 20 summit heights, got 3"),
