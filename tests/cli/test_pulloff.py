@@ -38,3 +38,10 @@ def test_pulloff_without_adhesion_has_null_separation(capsys):
     ref = asperity.pull_off(0.01, 1000, 0.0)
     code, out, _ = run(capsys, "pulloff", "--alpha", "0.01", "--beta", "1000", "--gamma", "0", "--format", "json")
     assert code == 0 and out.strip() == json.dumps({"pull_off": ref.force, "d": None, "exists": False})
+
+
+def test_pulloff_table_without_a_pull_off_shows_a_dash(capsys):
+    """Found by a review: the table printed the undefined separation as 'None'."""
+    code, out, _ = run(capsys, "pulloff", "--alpha", "0.01", "--beta", "1000", "--gamma", "0", "--format", "table")
+    header, row = out.strip().splitlines()
+    assert code == 0 and header.split() == ["pull_off", "d", "exists"] and row.split() == ["0", "-", "False"]

@@ -49,6 +49,8 @@ def format_json(value, *, indent: int | None = None) -> str:
 def _short(v) -> str:
     import numpy as np
 
+    if v is None:  # undefined (JSON null, an empty CSV cell): no separation without a pull-off
+        return "-"
     if isinstance(v, bool | np.bool_):
         return str(bool(v))
     if isinstance(v, float | np.floating):

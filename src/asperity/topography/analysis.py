@@ -258,11 +258,11 @@ def analyse_surface(path_or_topography, *, material=None, b=None, heights: bool 
     if isinstance(path_or_topography, str | os.PathLike):
         topo = read_topography(path_or_topography, **read_kwargs)
         source = os.fsdecode(os.fspath(path_or_topography))
-    elif read_kwargs:
-        raise TypeError(f"{sorted(read_kwargs)} only apply when reading a file")
     elif not all(hasattr(path_or_topography, a) for a in ("heights", "dim", "nb_grid_pts", "detrend")):
         raise TypeError(f"path_or_topography must be a file path (str or os.PathLike) or a SurfaceTopography "
                         f"topography or line scan, got {type(path_or_topography).__name__}")
+    elif read_kwargs:
+        raise TypeError(f"{sorted(read_kwargs)} only apply when reading a file")
     else:
         topo = path_or_topography
     if not isinstance(heights, bool):
