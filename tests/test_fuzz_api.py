@@ -200,7 +200,7 @@ def _valid_table(tmp: str) -> dict[str, callable]:
         "asperity.multi_asperity.mean_pressure": lambda: {"P": [1.0], "area": [2.0], "nu": 0.3},
         "asperity.multi_asperity.friction_coefficient": lambda: {"F": [1.0], "P": [2.0]},
         "asperity.physical.PhysicalContact": lambda: {"material": "Au", "surface": _surface()},
-        "asperity.physical.work_of_adhesion_from_gamma": lambda: {"gamma": 1e-3, "E_star": 1e11, "b": 2.5e-10},
+        "asperity.groups.work_of_adhesion_from_gamma": lambda: {"gamma": 1e-3, "E_star": 1e11, "b": 2.5e-10},
         "asperity.physical_results.warn_area_fraction": lambda: {"fraction": 0.01},
         "asperity.pull_off_search.find_pull_off": lambda: {"tab": _tab(), "d_lo": -3.0, "d_hi": 5.0},
         "asperity.quadrature.gauss_legendre": lambda: {"n": 8},

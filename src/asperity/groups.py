@@ -32,12 +32,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_broadcast, check_finite_result, check_poisson, check_positive, check_text
+from ._validation import (
+    check_broadcast,
+    check_finite_result,
+    check_nonnegative,
+    check_poisson,
+    check_positive,
+    check_text,
+)
+from .units import to_si
 
 __all__ = [
     "roughness_alpha",
     "regime_beta",
     "adhesion_gamma",
+    "work_of_adhesion_from_gamma",
     "composite_modulus",
     "modulus_ratio",
     "maugis_lambda",
@@ -114,6 +123,39 @@ def adhesion_gamma(w, E_star, b):
     check_broadcast(w=w, E_star=E_star, b=b)
     with np.errstate(all="ignore"):
         return check_finite_result(w / (E_star * b), "gamma", w=w, E_star=E_star, b=b)
+
+
+def work_of_adhesion_from_gamma(gamma, E_star, b):
+    r"""Work of adhesion :math:`w = \gamma E^* b` (J/m^2), the inverse of Eq (16).
+
+    Parameters
+    ----------
+    gamma : array_like
+        Adhesion parameter, >= 0.
+    E_star : array_like or pint.Quantity
+        Composite Young's modulus (Pa), > 0.
+    b : array_like or pint.Quantity
+        Burgers vector (m), > 0.
+
+    References
+    ----------
+    Adams et al., Eq (16).
+
+    .. math:: w = \gamma E^* b
+
+    Returns
+    -------
+    float or ndarray
+        :math:`w` (J/m^2), broadcast over the inputs.
+    """
+    gamma = check_nonnegative(to_si(gamma, "", "gamma"), "gamma")
+    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
+    b = check_positive(to_si(b, "m", "b"), "b")
+    check_broadcast(gamma=gamma, E_star=E_star, b=b)
+    with np.errstate(all="ignore"):
+        w = gamma * E_star * b
+    out = check_finite_result(w, "w", gamma=gamma, E_star=E_star, b=b)
+    return float(out) if np.ndim(out) == 0 else out
 
 
 def composite_modulus(E, nu):

@@ -56,16 +56,14 @@ from . import groups
 from ._validation import (
     check_1d,
     check_bool,
-    check_broadcast,
     check_finite_result,
-    check_nonnegative,
-    check_positive,
     check_scalar_positive,
 )
 from ._warnings import AsperityWarning
 from .curves import CurveResult, Model
 from .elastic_plastic import LAWS, plastic_fraction
 from .friction_stress import ConstantShear, FrictionLaw
+from .groups import work_of_adhesion_from_gamma
 from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .interaction import interaction_for_surface
 from .materials import Material, as_material
@@ -104,12 +102,6 @@ __all__ = [
     "adhesion_regime",
     "fuller_tabor_parameter",
 ]
-
-
-def _out(x):
-    """A 0-d result as float, otherwise the array."""
-    x = np.asarray(x, dtype=float)
-    return float(x) if x.ndim == 0 else x
 
 
 class PhysicalContact(ContactDescription, ContactPlasticity):
@@ -409,37 +401,3 @@ def _adhesion_w(body: Material, adhesion: bool) -> float:
                          "(dataclasses.replace(material, w=...)) or pass adhesion=False for the Hertz model "
                          "(command line: --w or --no-adhesion)")
     return body.w
-
-
-# -- inverse conversion --------------------------------------------------------------------
-
-def work_of_adhesion_from_gamma(gamma, E_star, b):
-    r"""Work of adhesion :math:`w = \gamma E^* b` (J/m^2), the inverse of Eq (16).
-
-    Parameters
-    ----------
-    gamma : array_like
-        Adhesion parameter, >= 0.
-    E_star : array_like or pint.Quantity
-        Composite Young's modulus (Pa), > 0.
-    b : array_like or pint.Quantity
-        Burgers vector (m), > 0.
-
-    References
-    ----------
-    Adams et al., Eq (16).
-
-    .. math:: w = \gamma E^* b
-
-    Returns
-    -------
-    float or ndarray
-        :math:`w` (J/m^2), broadcast over the inputs.
-    """
-    gamma = check_nonnegative(to_si(gamma, "", "gamma"), "gamma")
-    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
-    b = check_positive(to_si(b, "m", "b"), "b")
-    check_broadcast(gamma=gamma, E_star=E_star, b=b)
-    with np.errstate(all="ignore"):
-        w = gamma * E_star * b
-    return _out(check_finite_result(w, "w", gamma=gamma, E_star=E_star, b=b))
