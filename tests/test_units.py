@@ -78,3 +78,9 @@ def test_a_positive_exponent_before_a_unit_is_a_number_not_a_complex_literal():
     assert parse_quantity("2.885Å", "m", "b") == pytest.approx(2.885e-10, rel=1e-15)
     with pytest.raises(ValueError, match="x must have units compatible with m"):
         parse_quantity("3J", "m", "x")
+
+
+def test_expressions_and_wrong_dimensions_keep_the_whole_texts_meaning():
+    assert parse_quantity("3 m + 2 m", "m", "x") == 5.0  # not 3 * (m + 2 m)
+    with pytest.raises(ValueError, match="got 3 joule"):
+        parse_quantity("3J", "m", "x")

@@ -174,7 +174,9 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
                          f"(or give a plain number in {_unit_label(unit)})") from None
     split = _NUMBER_UNIT.match(stripped)
     if split is not None:  # '60nm', '1e0J/m^2': the number read by Python, the unit by pint
-        return _decimal_scaled(float(split.group(1)), split.group(2), text, unit, name, registry)
+        scaled = _decimal_scaled(float(split.group(1)), split.group(2), unit, name, registry)
+        if scaled is not None:
+            return scaled
     try:
         quantity = registry.parse_expression(stripped)
     except Exception as err:
@@ -191,18 +193,22 @@ _NUMBER_UNIT = re.compile(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(?![e
                           r"([A-Za-z\u00b5\u03bc\u00c5\u212b].*)$")
 
 
-def _decimal_scaled(number: float, unit_text: str, text: str, unit: str, name: str, registry) -> float:
-    """``number`` times the unit ``unit_text`` in ``unit``.  A decimal factor (an SI prefix:
-    1e-9 for nm) divides by the exact power of ten instead of multiplying by its rounded
-    reciprocal, so that '60nm' is 6e-08 as '6e-8m' is, not 6.000000000000001e-08."""
+def _decimal_scaled(number: float, unit_text: str, unit: str, name: str, registry) -> float | None:
+    """``number`` times the unit ``unit_text`` in ``unit``, or None if ``unit_text`` is not one
+    plain unit (an expression such as 'm + 2 m': the whole text then goes to pint).  A decimal
+    factor (an SI prefix: 1e-9 for nm) divides by the exact power of ten instead of
+    multiplying by its rounded reciprocal, so that '60nm' is 6e-08 as '6e-8m' is, not
+    6.000000000000001e-08."""
     try:
         one = registry.parse_expression(unit_text)
-    except Exception as err:
-        raise ValueError(f"{name} = {text!r} is not a quantity with a unit compatible with "
-                         f"{_unit_label(unit)} ({type(err).__name__}: {err})") from None
-    if not is_quantity(one):
-        raise ValueError(f"{name} = {text!r} is not a quantity with a unit compatible with {_unit_label(unit)}")
-    factor = float(_convert(one, unit, name))
+    except Exception:  # noqa: BLE001 - pint's parser raises many kinds: the whole text decides
+        return None
+    if not is_quantity(one) or one.magnitude != 1:
+        return None
+    try:
+        factor = float(_convert(one, unit, name))
+    except ValueError:  # a wrong dimension: the whole text's message names the value given
+        return None
     if factor > 0 and math.isfinite(factor):
         k = round(math.log10(factor))
         if abs(k) <= 22 and factor == float(f"1e{k}"):  # 10**|k| is exact up to 1e22
