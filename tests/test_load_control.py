@@ -3,6 +3,7 @@
 import numpy as np
 import pytest
 
+import asperity
 from asperity.asperity_law import ModelParameters
 from asperity.load_control import (
     bracket_low,
@@ -160,3 +161,28 @@ def test_branch_guess_is_exact_where_asinh_of_the_force_is_linear():
 
 def test_d_min_is_the_floor():
     assert D_MIN == -1e4
+
+
+@pytest.mark.parametrize("beta", [800.0, 800.01, 800.1, 801.0])
+def test_tensile_loads_near_pull_off_are_on_the_ordered_branch(beta):
+    """Found by a review of the fits: when the refined pull-off fell before the last grid point
+    kept (beta = 800.1 here), or was reused from another grid (a pull_off() before
+    load_curve()), the branch went back in d and loads between were given the pull-off's
+    friction.  Now the branch is ordered, the result does not depend on the call history,
+    and equals the reference path (adaptive quadrature, its own root search)."""
+    from asperity import reference
+
+    p = (0.012, beta, 2e-3)
+    P = np.array([-1.2e-5, -8e-6, -4e-6])
+    fresh = asperity.Model(*p).load_curve(P)
+    m = asperity.Model(*p)
+    m.pull_off()
+    after = m.load_curve(P)
+    np.testing.assert_array_equal(fresh.F, after.F)
+    tab = m.tabulation(-3.0, 10.0)
+    branch = stable_branch(tab, -3.0, 10.0, pull_off=m.pull_off())
+    assert np.all(np.diff(branch.grid) > 0) and np.all(np.diff(branch.P) < 0)
+    for i, load in enumerate(P):
+        ref = reference.load_point(load, *p)
+        assert fresh.d[i] == pytest.approx(ref["d"], rel=1e-7, abs=1e-9)
+        assert fresh.F[i] == pytest.approx(ref["F"], rel=1e-7)

@@ -268,7 +268,13 @@ def stable_branch(tab: Tabulation, d_lo, d_hi, *, d_top=None, P_min=None, pull_o
         if pull_off is None:
             pull_off = find_pull_off(tab, d_lo, d_hi, grid, Pg, dPg)
         floor = -pull_off.force
-        return Branch(np.append(grid[:i], pull_off.d), np.append(Pg[:i], floor), np.append(dPg[:i], 0.0), tab,
+        # the grid points before the refined pull-off (which may lie either side of grid[i - 1],
+        # and, reused from another grid, anywhere near grid[i]), above its force: the branch
+        # stays ordered in d and decreasing in P up to it
+        k = int(np.searchsorted(grid[:i + 1], pull_off.d, side="left"))
+        above = np.flatnonzero(Pg[:k] <= floor)
+        k = int(above[0]) if above.size else k
+        return Branch(np.append(grid[:k], pull_off.d), np.append(Pg[:k], floor), np.append(dPg[:k], 0.0), tab,
                       pull_off)
     grid, Pg, dPg = grid[:i + 1], Pg[:i + 1], dPg[:i + 1]
     d_top = d_hi if d_top is None else check_scalar_real(d_top, "d_top")
