@@ -286,3 +286,31 @@ def test_a_model_outside_its_domain_at_the_start_names_the_held_values():
     with pytest.raises(ValueError, match=r"cannot be evaluated at the start values \(H_over_E = 1e-09.*"
                                          r"change the held values \(H_over_E, .*\) or the start values$"):
         fit_friction_load(data, GWFit(law=JacksonGreen(1e-9)), ci="wald")
+
+
+def test_zero_data_under_auto_weights_and_all_zero_data_are_refused():
+    """Found by a review: a zero friction under the default (relative) weights gave a
+    chi-square of 1e200 and 'undetermined' parameters with status 0; all-zero data too."""
+    P = np.array([0.0, 10.0, 20.0, 30.0, 40.0])
+    data = friction_load_data(P, np.array([0.0, 2.1, 4.2, 5.9, 8.1]))
+    with pytest.raises(ValueError, match=r"weights='auto' weighs by 1/\|value\| .* = 0 at row 1; give an "
+                                         r"uncertainty column or use weights='none'"):
+        fit_friction_load(data, "amontons")
+    ok = fit_friction_load(data, "amontons", weights="none", ci="wald")
+    assert ok.values["mu0"] == pytest.approx(0.2, abs=0.01)
+    with pytest.raises(ValueError, match="every F is 0: there is nothing to fit|every .* is 0"):
+        fit_friction_load(friction_load_data(P[1:], np.zeros(4)), "cos", weights="none")
+
+
+def test_maugis_dugdale_on_pull_off_data_with_a_radius_per_row():
+    """Found by a review: KeyError 'R_m' (a traceback on the command line) from the derived
+    lambda, which has no single value when each row has its own tip radius."""
+    from asperity.fit import fit_pull_off, pull_off_data
+    from asperity.maugis_dugdale_load import md_pull_off_force
+
+    si = material("Si")
+    R = np.array([10e-9, 20e-9, 40e-9, 80e-9])
+    F = np.array([md_pull_off_force(R=r, w=0.1, E_star=si.E_star, lam=2.0) for r in R])
+    data = pull_off_data(F, conditions={"R_m": R}, physical=True)
+    res = fit_pull_off(data, "md", material="Si", ci="wald")
+    assert "lam" not in res.derived and res.values["w_J_m2"] > 0

@@ -142,16 +142,21 @@ def resolve_weights(data: Dataset, weights: str) -> str:
     """The weighting actually used for ``data`` (``'auto'`` resolved; ``'column'`` checked)."""
     if weights not in WEIGHTS:
         raise ValueError(f"weights must be one of {', '.join(WEIGHTS)}, got {weights!r}")
+    if np.all(data.y == 0):
+        raise ValueError(f"{data.name}: every {data.y_name} is 0: there is nothing to fit")
     has = data.y_err is not None or data.x_err is not None
+    asked = weights
     if weights == "auto":
-        return "column" if has else ("none" if data.kind == "force" else "relative")
+        weights = "column" if has else ("none" if data.kind == "force" else "relative")
     if weights == "column" and not has:
         raise ValueError(f"weights='column' needs an uncertainty column ({data.name}: e.g. F_err, mu_err, P_err, "
                          "friction_err [nN]); use 'relative' or 'none'")
     if weights == "relative" and np.any(data.y == 0):
         i = int(np.flatnonzero(data.y == 0)[0])
-        raise ValueError(f"weights='relative' needs nonzero data, {data.name} has {data.y_name} = 0 at row {i + 1}; "
-                         "use weights='none'")
+        how = ("weights='auto' weighs by 1/|value| without an uncertainty column, and "
+               if asked == "auto" else "weights='relative' needs nonzero data, ")
+        raise ValueError(f"{how}{data.name} has {data.y_name} = 0 at row {i + 1}; give an uncertainty column or "
+                         "use weights='none' (command line: --weights none)")
     return weights
 
 

@@ -191,6 +191,8 @@ class MDFit(_Law):
                 int(np.sum(delta < end)))
 
     def derived(self, v):
+        if "R_m" not in v:  # pull-off data with a radius per row: no single lambda
+            return {}
         return {"lam": float(md_lambda(v["R_m"], v["w_J_m2"], v["E_star_Pa"], v["sigma0_Pa"]))}
 
 
