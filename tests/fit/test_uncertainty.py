@@ -203,3 +203,24 @@ def test_chi_square_check_with_stated_uncertainties():
     F = 0.3 * P**1.5  # not a straight line: Amontons cannot describe it within 1e-3
     res = fit_friction_load(friction_load_data(P, F, F_err=np.full(20, 1e-3)), "amontons")
     assert any("does not describe the data within their stated uncertainties" in w for w in res.warnings)
+
+
+def test_a_profile_whose_root_search_fails_keeps_the_wald_interval_and_says_so(monkeypatch):
+    """Found by a review: scipy's 'f(a) and f(b) must have different signs' from inside
+    lmfit.conf_interval ended the whole fit (a noisy chi-square).  Now that parameter keeps
+    its Wald interval, with a note and a warning quoting the reason."""
+    import lmfit
+
+    data = _correlated_fit_data()
+    kw = {"fix": {"E_star_Pa": E_STAR}, "start": {"R_m": R, "w_J_m2": 0.1, "tau_Pa": 1e9}, "vary": ["w_J_m2", "tau_Pa"]}
+    wald = fit_friction_load(data, "jkr", ci="wald", **kw)
+
+    def failing(*args, **kwargs):
+        raise ValueError("f(a) and f(b) must have different signs")
+    monkeypatch.setattr(lmfit, "conf_interval", failing)
+    res = fit_friction_load(data, "jkr", ci="profile", **kw)
+    for name in ("w_J_m2", "tau_Pa"):
+        p = res.parameters[name]
+        assert p.method == "wald" and p.ci95 == wald.parameters[name].ci95 and "profile failed" in p.note
+        assert any(m.startswith(f"{name}: the profile likelihood could not be computed (f(a) and f(b) must have")
+                   for m in res.warnings)

@@ -245,7 +245,10 @@ class AmontonsFit(FitModel):
         v = dict(values)
         P0_name = "P0_N" if data.physical else "P0"
         F = data.y * (data.x if data.quantity == "mu" else 1.0)
-        slope, intercept = np.polyfit(data.x, F, 1) if len(data) > 1 else (F[0] / data.x[0], 0.0)
+        if len(np.unique(data.x)) > 1:
+            slope, intercept = np.polyfit(data.x, F, 1)
+        else:  # one load (repeated): no line through the points, the ratio is the start
+            slope, intercept = float(np.mean(F) / data.x[0]) if data.x[0] else 0.0, 0.0
         slope = slope if slope > 0 else float(np.max(F) / max(np.max(np.abs(data.x)), 1e-300))
         if v.get("mu0") is None:
             v["mu0"] = slope

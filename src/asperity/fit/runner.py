@@ -296,6 +296,11 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
                                 "correlated parameter")
                 notes[n] = (notes.get(n, "") + "; profile over budget, Wald interval approximate").lstrip("; ")
                 continue
+            if why_lo == "failed":
+                warnings.append(f"{n}: the profile likelihood could not be computed ({why_hi[:160]}); its Wald "
+                                "interval is shown, approximate")
+                notes[n] = (notes.get(n, "") + "; profile failed, Wald interval approximate").lstrip("; ")
+                continue
             intervals[n] = tuple(None if z is None else (10.0**z if p.log else z) for z in (lo, hi))
             methods[n] = "profile"
             for end, why, side in ((lo, why_lo, "lower"), (hi, why_hi, "upper")):

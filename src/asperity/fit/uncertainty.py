@@ -282,7 +282,8 @@ def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict,
     dict
         name -> ``(lo, hi, why_lo, why_hi)`` in fitted coordinates; a side the profile could
         not close is ``None`` with the reason (``'bound'``, ``'flat'``, or ``'budget'`` for
-        a profile stopped when the budget was spent: both sides of that parameter).
+        a profile stopped when the budget was spent: both sides of that parameter; or
+        ``'failed'`` and the root search's message when the profile could not be computed).
     """
     deadline = time.monotonic() + budget
     objective = minimizer.userfcn
@@ -308,6 +309,8 @@ def _profiles(minimizer, result, names, absolute, bounds):
             return {names[0]: _profile_one(minimizer, result, names[0], absolute, bounds)}
         except _OverBudget:
             return {names[0]: (None, None, "budget", "budget")}
+        except ValueError as err:  # a root search that could not bracket (a noisy or stepped chi-square)
+            return {names[0]: (None, None, "failed", " ".join(str(err).split()))}
     prob = chi2_probability if absolute else None
     out = {}
     for name in names:
@@ -321,6 +324,9 @@ def _profiles(minimizer, result, names, absolute, bounds):
                 continue
             except _OverBudget:
                 out[name] = (None, None, "budget", "budget")
+                continue
+            except ValueError as err:  # scipy's bracketing ("f(a) and f(b) must have different signs")
+                out[name] = (None, None, "failed", " ".join(str(err).split()))
                 continue
         rows = ci[name]
         centre = next(i for i, (prob, _) in enumerate(rows) if prob == 0.0)
