@@ -243,11 +243,14 @@ def test_law_plasticity_and_interaction_controls():
                                    "mode=physical&interaction=cgp2008",
                                    "mode=physical&adhesion=0&size_effect=1"])
 def test_a_rejected_physical_link_says_so(query):
-    """Found by a review: the mode reset of the fallback cleared the note (physical links only)."""
+    """Found by a review: the mode reset of the fallback cleared the note (physical links only);
+    a later review: the fallback threw the mode away too, now it is the link's mode's default."""
     s = session(query)
     assert "the link&#x27;s parameters were rejected" in s.page.messages_html or \
         "the link's parameters were rejected" in s.page.messages_html
-    assert s.failure is None and query_state(s).mode == "dimensionless"
+    assert "default view of its mode (physical)" in s.page.messages_html
+    assert s.failure is None and query_state(s).mode == "physical"
+    assert query_state(s) == default_state().replace(mode="physical")
 
 
 def test_a_linked_table_material_shows_its_own_values():
@@ -288,6 +291,17 @@ def test_editing_a_table_materials_value_shows_the_custom_fields_and_says_what_i
     assert all(s.controls[k].layout.visible for k in ("H_Pa", "H0_Pa", "h_star_m"))
     assert "custom material from Si, which has no H0 (size effect), h* in the table" in s.page.messages_html
     assert s.result.subject.material.H == material("Si").H
+
+
+def test_choosing_custom_in_the_menu_says_what_the_fields_hold_that_the_table_lacks():
+    """Found by a review: custom chosen from the menu kept Au's H for H0 and a default h*, and
+    the size effect ran on them without a note (editing a value did give one)."""
+    s = session("mode=physical&adhesion=0&plasticity=jackson-green")
+    s.controls["material"].widget.value = CUSTOM
+    assert "custom material from Au, which has no H0 (size effect), h* in the table" in s.page.messages_html
+    s = session("mode=physical&material=Cu&adhesion=0&plasticity=jackson-green")
+    s.controls["material"].widget.value = CUSTOM  # copper has every value: nothing to say
+    assert "custom material from" not in s.page.messages_html
 
 
 def test_the_physical_jackson_green_law_has_no_adhesion_control():

@@ -164,8 +164,14 @@ def test_parse_value_with_units_and_errors():
     assert parse_value(spec["sigma_s_m"], "2e-9") == 2e-9  # a bare number is SI
     assert parse_value(spec["alpha"], " 0.01 ") == 0.01
     assert parse_value(spec["adhesion"], "0") is False
-    with pytest.raises(ValueError, match="sigma_s.*compatible with m"):
-        parse_value(spec["sigma_s_m"], "2 s")
+    # found by a review: pint's exception text (DimensionalityError, 'got 1 dimensionless' for an
+    # empty field) reached the page; now one sentence naming the field, its unit and an example
+    for text in ("2 s", "79 kg", "lots", "", "nan"):
+        with pytest.raises(ValueError, match=rf"^sigma_s_m: expected a number in m or a quantity with a unit such "
+                                             rf"as 2nm, got '{text}'$"):
+            parse_value(spec["sigma_s_m"], text)
+    with pytest.raises(ValueError, match=r"^E: expected a number in Pa .* such as 79GPa, got '79 kg'$"):
+        parse_value(spec["E_Pa"], "79 kg")
     with pytest.raises(ValueError, match=r"beta: expected a number, got ''"):
         parse_value(spec["beta"], "")
 

@@ -78,3 +78,26 @@ def test_a_session_shows_the_pages_words():
     shown = attempt(state)
     assert isinstance(shown, str) and "untick adhesion or choose the interaction none" in shown
     assert not API.search(shown)
+
+
+def test_fit_file_and_missing_value_advice_in_the_pages_words(tmp_path):
+    """Found by a review of the page: the fit panel advised drop_nan=True / --drop-nan, and a
+    material value read 'must be > 0 m or None (missing)'."""
+    from asperity.bodies import contact_material
+    from asperity.fit import read_data
+
+    path = tmp_path / "nan.csv"
+    path.write_text("P,F\n1,0.5\n2,nan\n3,1.5\n")
+    with pytest.raises(ValueError) as info:
+        read_data(path)
+    shown = page_wording(str(info.value))
+    assert "drop_nan" not in shown and "--drop-nan" not in shown and "remove such rows from the file" in shown
+    with pytest.raises(ValueError) as info:
+        contact_material(E=7e10, nu=0.3, b=0.0)
+    assert "None" in str(info.value) and "None" not in page_wording(str(info.value))
+
+
+def test_the_two_curves_notes_that_differ_in_numbers_are_shown_once():
+    state, _ = state_from_query("mode=physical")
+    result = attempt(state)
+    assert sum(w.startswith("PlasticityWarning") for w in result.warnings) == 1

@@ -229,10 +229,9 @@ class ExplorerSession:
             table = self.pending["material"]
             changes["material"] = CUSTOM
             self.controls["material"].set(CUSTOM)
-            lacking = [self.fields[k].label or k for k in MATERIAL_KEYS if k not in material_values(table)]
-            if lacking:  # the custom copy keeps the fields' values where the table has none: say so
-                note = (f"custom material from {table}, which has no {', '.join(lacking)} in the table: the "
-                        "values shown for them are used")
+            note = self._custom_note(table) or note
+        if key == "material" and value == CUSTOM and self.pending["material"] != CUSTOM:  # chosen in the menu
+            note = self._custom_note(self.pending["material"]) or note
         if key == "material" and value != CUSTOM:
             changes.update(self._material_values(value))
         self.pending = self.pending.replace(**changes)
@@ -241,6 +240,14 @@ class ExplorerSession:
             self._show_mode(self.pending)
         self.link_messages = [note] if note else []
         self.request()
+
+    def _custom_note(self, table: str) -> str | None:
+        """The custom copy of a table material keeps the fields' values where the table has none: say so."""
+        lacking = [self.fields[k].label or k for k in MATERIAL_KEYS if k not in material_values(table)]
+        if not lacking:
+            return None
+        return (f"custom material from {table}, which has no {', '.join(lacking)} in the table: the values shown "
+                "for them are used")
 
     def set_values(self, values: dict) -> None:
         """Several parameters at once (a fit's values): the controls show them and the view updates."""
@@ -316,9 +323,9 @@ class ExplorerSession:
         """The first view: the link's, or if the library rejects it, the defaults (saying why)."""
         self._show_mode(wanted)
         if not self.update(wanted):
-            notes = [*self.link_messages, f"the link's parameters were rejected ({self.failure}); "
-                                          "showing the default view"]
-            self.pending = default_state()
+            notes = [*self.link_messages, f"the link's parameters were rejected ({self.failure}); showing the "
+                                          f"default view of its mode ({wanted.mode})"]
+            self.pending = default_state().replace(mode=wanted.mode)  # a physical link stays physical
             for key, control in self.controls.items():
                 control.set(self.pending[key])
             self.mode.active = MODES.index(self.pending.mode)  # a mode change clears the link's notes

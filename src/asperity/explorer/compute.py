@@ -32,6 +32,7 @@ Nothing here imports Bokeh.
 from __future__ import annotations
 
 import math
+import re
 import warnings
 from dataclasses import dataclass, field
 
@@ -220,7 +221,9 @@ def compute(state: State) -> Result:
         pull_off = subject.pull_off()
         derived = _derived(state, subject, pull_off)
     notes = [f"{w.category.__name__}: {page_wording(str(w.message))}" for w in caught]
-    return Result(state, subject, load, separation, pull_off, tuple(derived), tuple(dict.fromkeys(notes)))
+    # one of each: the two curves' notes differ only in their numbers (a share, a load), the first kept
+    unique = {re.sub(r"\d[\d.e+-]*", "#", n): n for n in reversed(notes)}
+    return Result(state, subject, load, separation, pull_off, tuple(derived), tuple(reversed(unique.values())))
 
 
 # -- what the plots show ------------------------------------------------------------------

@@ -35,6 +35,7 @@ import numpy as np
 
 from .compute import asperity_law, height_distribution
 from .state import ELASTIC, MODES
+from .wording import page_wording
 
 __all__ = ["FitPanel", "fit_panel", "FIT_VARY", "PLASTIC_VARY", "fitted_names", "MAX_UPLOAD_BYTES"]
 
@@ -161,7 +162,7 @@ class FitPanel:
             try:
                 data = self.fit.read_data(path, kind="friction")
             except ValueError as err:
-                return self._say(str(err).replace(path, filename).replace(tmp, ""))
+                return self._say(page_wording(str(err).replace(path, filename).replace(tmp, "")))
         if data.physical:
             return self._say(f"{filename}: loads with units (physical data); the panel fits the dimensionless "
                              "model: give P and F (or mu) in units of N G b^2, or use asperity fit --material")
@@ -209,7 +210,7 @@ class FitPanel:
             return self.fit.fit_friction_load(data, model, start={k: state[k] for k in vary},
                                               fix={k: state[k] for k in fixed}, vary=vary, ci="wald")
         except ValueError as err:
-            return f"the fit failed: {err}"
+            return f"the fit failed: {page_wording(str(err))}"
 
     def _fitted(self, outcome) -> None:
         """Show a fit's outcome (on the page's thread)."""
@@ -257,7 +258,7 @@ class FitPanel:
             lo, hi = (np.nan if x is None else float(x) for x in (p.ci95 or (None, None)))
             ci = f"[{lo:.4g}, {hi:.4g}]" if np.isfinite(lo) and np.isfinite(hi) else "—"
             rows.append(f"<tr><td>{name}</td><td>{p.value:.6g}</td><td>± {err}</td><td>{ci}</td></tr>")
-        notes = "".join(f"<li>{html.escape(w)}</li>" for w in r.warnings)
+        notes = "".join(f"<li>{html.escape(page_wording(w))}</li>" for w in r.warnings)
         return ("<table class='asp-fit-table'><tr><th>parameter</th><th>value</th><th>standard error</th>"
                 f"<th>95 % interval</th></tr>{''.join(rows)}</table>"
                 f"<div>χ² = {r.chisqr:.4g} over {r.n_points} points, AIC = {r.aic:.4g}</div>"

@@ -280,6 +280,14 @@ def default_state() -> State:
     return State({k: f.default for k, f in fields().items()})
 
 
+#: An example of a quantity in each SI unit of the page, for messages.
+_EXAMPLES = {"Pa": "79GPa", "m": "2nm", "J/m^2": "0.5J/m^2", "1/m^2": "1e12/m^2", "m^2": "1mm^2", "N": "10mN"}
+
+
+def _example(unit: str) -> str:
+    return _EXAMPLES.get(unit, f"1 {unit}")
+
+
 def parse_value(f: Field, text: str):
     """The value of field ``f`` typed (or linked) as ``text``.
 
@@ -312,7 +320,14 @@ def parse_value(f: Field, text: str):
     if f.unit:
         from ..units import parse_quantity
 
-        return parse_quantity(text, f.unit, name, require_unit=False)
+        try:
+            value = parse_quantity(text, f.unit, name, require_unit=False) if text else math.nan
+        except ValueError:  # pint's exception text is no sentence for the page
+            value = None
+        if value is None or not math.isfinite(value):
+            raise ValueError(f"{name}: expected a number in {f.unit} or a quantity with a unit such as "
+                             f"{_example(f.unit)}, got {text!r}") from None
+        return value
     try:
         value = float(text)
     except ValueError:

@@ -33,6 +33,11 @@ RULES = (
      "choose the asperity law jackson-green (it has no adhesion)"),
     (r"plasticity='jackson-green'", "the asperity law jackson-green"),
     (r", or filter asperity\.PlasticityWarning \(threshold [^)]*\)", ""),
+    (r" or None \(missing\)", ""),
+    (r"drop such rows with drop_nan=True[^)]*", "remove such rows from the file"),
+    (r"give an uncertainty column or use weights='none'", "give an uncertainty column"),
+    (r": fix one of them", ": the data do not determine them (the fit panel varies them all)"),
+    (r": fix it, or give data that depend on it", ": the data do not determine it"),
 )
 _COMPILED = tuple((re.compile(p), r) for p, r in RULES)
 

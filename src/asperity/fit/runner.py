@@ -230,7 +230,8 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
                          for n, v, w in zip(names, var_names, weights, strict=True) if abs(w) > 0.1).lstrip("+ ")
         warnings.append(f"the data cannot fix {', '.join(group)} separately: the fit does not change along "
                         f"{combo} (a singular Jacobian); no standard error or interval for "
-                        f"{'it' if len(group) == 1 else 'them'}: fix one of them")
+                        + ("it: fix it, or give data that depend on it" if len(group) == 1
+                           else "them: fix one of them"))
         for n in group:
             notes[n] = "undetermined: only a combination with " + ", ".join(g for g in group if g != n) \
                 if len(group) > 1 else "undetermined: the data do not depend on it"
