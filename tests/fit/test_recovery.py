@@ -200,3 +200,25 @@ def test_property_amontons_recovers_mu0_and_P0(mu0, P0):
     res = fit_friction_load(friction_load_data(P, mu0 * (P + P0)), "amontons", weights="none", ci="wald")
     assert res.values["mu0"] == pytest.approx(mu0, rel=1e-8)
     assert res.values["P0"] == pytest.approx(P0, rel=1e-7, abs=1e-9)
+
+
+def test_a_nanometre_offset_of_a_force_curve_is_recovered():
+    """Found by a review: the offset d0_m (metres) did not move from its start, or landed at a
+    worse chi-square, because SciPy's finite differences stepped it by 15 nm.  Hertz's closed
+    form F = 4/3 E* R^(1/2) (d0 - d)^(3/2) with d0 = 2 nm and 2 % noise, 20 seeds: d0 within 2 %
+    every time, and the truth inside both 95 % intervals in at least 16 of 20 (19 expected)."""
+    from asperity.fit import fit_force_separation, force_separation_data
+
+    d0, radius = 2e-9, 20e-9
+    d = np.linspace(-1e-9, 1.95e-9, 30)
+    F = 4.0 / 3.0 * E_STAR * math.sqrt(radius) * (d0 - d) ** 1.5
+    covered = 0
+    for seed in range(20):
+        noisy = F * (1 + 0.02 * np.random.default_rng(seed).standard_normal(d.size))
+        data = force_separation_data(d, noisy, P_err=0.02 * F, physical=True)
+        res = fit_force_separation(data, "hertz", fix={"E_star_Pa": E_STAR}, vary=["R_m", "d0_m"],
+                                   start={"R_m": 25e-9, "d0_m": 1.7e-9}, ci="wald")
+        assert res.success and res.values["d0_m"] == pytest.approx(d0, rel=0.02)
+        covered += all(lo <= true <= hi for (lo, hi), true in
+                       ((res.parameters["d0_m"].ci95, d0), (res.parameters["R_m"].ci95, radius)))
+    assert covered >= 16, covered

@@ -251,10 +251,10 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
     for v, n, xi in zip(var_names, names, x, strict=True):
         lo, hi = bounds[v]
         start = by_fitted[v]
-        scale_x = max(abs(xi), abs(math.log10(start.value) if start.log else start.value), 1e-300)
+        scale_x = max(abs(xi), abs(math.log10(start.value) if start.log else start.value / start.scale), 1e-300)
         for edge, side in ((lo, "lower"), (hi, "upper")):
             if math.isfinite(edge) and abs(xi - edge) <= 1e-6 * max(scale_x, abs(edge)) and n not in undetermined:
-                at_bound[n] = (side, 10.0**edge if by_fitted[v].log else edge)
+                at_bound[n] = (side, by_fitted[v].linear(edge))
     for n, (side, edge) in at_bound.items():
         warnings.append(f"{n} ended at its {side} bound {edge:g}: the data push it beyond the allowed range; "
                         "no standard error or interval (widen the bound, fix it, or question the model)")
@@ -270,6 +270,7 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
             continue
         p = by_fitted[v]
         lo, hi = wald_interval(x[i], se[i], quantile, p.log)
+        lo, hi = (lo * p.scale, hi * p.scale) if not p.log else (lo, hi)
         intervals[n] = (max(lo, p.lo), min(hi, p.hi))
         if intervals[n] != (lo, hi):
             notes[n] = "Wald interval cut at a bound"
@@ -302,7 +303,7 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
                                 "interval is shown, approximate")
                 notes[n] = (notes.get(n, "") + "; profile failed, Wald interval approximate").lstrip("; ")
                 continue
-            intervals[n] = tuple(None if z is None else (10.0**z if p.log else z) for z in (lo, hi))
+            intervals[n] = tuple(None if z is None else p.linear(z) for z in (lo, hi))
             methods[n] = "profile"
             for end, why, side in ((lo, why_lo, "lower"), (hi, why_hi, "upper")):
                 if end is None:
@@ -343,7 +344,7 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
             i = free[name]
             bad = name in a["undetermined"] or name in a["at_bound"]
             stderr = None if bad or not np.isfinite(a["se"][i]) else float(
-                _LN10 * values[name] * a["se"][i] if p.log else a["se"][i])
+                _LN10 * values[name] * a["se"][i] if p.log else a["se"][i] * p.scale)
             estimates[name] = ParameterEstimate(name, values[name], stderr, a["intervals"].get(name, (None, None)),
                                                 True, unit, log, a["methods"].get(name, "undetermined"),
                                                 a["notes"].get(name, ""))
