@@ -87,3 +87,16 @@ def test_comparison_table():
     assert [d["model"] for d in table.to_list()] == [r["model"] for r in rows]
     assert table.to_csv().startswith("model,n_free,chisqr")
     assert "dAIC" in table.summary() and len(table) == 2 and table.best is table.results[0]
+
+
+def test_physical_axes_carry_the_si_prefix_of_the_data():
+    """Found by a review: AFM data in nN were drawn as 'load (N)' with a 1e-8 offset; the
+    axes now scale to the data's prefix, the points at their values in it."""
+    pytest.importorskip("matplotlib")
+    P = np.linspace(1e-9, 5e-8, 12)
+    data = friction_load_data(P, 0.3 * P + 2e-9, physical=True)
+    fig = fit_friction_load(data, "amontons", ci="wald").plot()
+    top, bottom = fig.axes[0], fig.axes[1]
+    assert top.get_ylabel() == "friction (nN)" and bottom.get_xlabel() == "load (nN)"
+    points = np.asarray(top.containers[0].lines[0].get_xdata())  # the errorbar's markers
+    np.testing.assert_allclose(points, P * 1e9, rtol=1e-12)

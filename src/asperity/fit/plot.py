@@ -19,6 +19,21 @@ _LABELS = {"friction": ("load", "friction"), "force": ("separation", "normal for
            "pull_off": ("row (condition)", "pull-off force")}
 
 
+#: SI prefixes of the axes, by power of ten.
+_PREFIX = {12: "T", 9: "G", 6: "M", 3: "k", 0: "", -3: "m", -6: "µ", -9: "n", -12: "p", -15: "f"}
+
+
+def _si_axis(values, unit: str) -> tuple[float, str]:
+    """The factor and label of an axis in ``unit`` with the SI prefix of its largest value
+    (nanonewtons for AFM forces rather than 1e-8 N and an offset)."""
+    finite = np.abs(np.asarray(values, dtype=float))
+    finite = finite[np.isfinite(finite) & (finite > 0)]
+    if not unit or finite.size == 0:
+        return 1.0, f" ({unit})" if unit else ""
+    k = int(np.clip(3 * np.floor(np.log10(finite.max()) / 3), -15, 12))
+    return 10.0**-k, f" ({_PREFIX[k]}{unit})"
+
+
 def _curve_xy(curve, data):
     cols = curve.columns()
     if data.kind == "friction":
@@ -63,12 +78,13 @@ def plot_fit(result, path=None, *, fmt=None):
         r = result.residuals[start:start + len(data)]
         start += len(data)
         xl, yl = _LABELS[data.kind]
-        unit_x = {"friction": " (N)", "force": " (m)"}.get(data.kind, "") if data.physical else ""
-        unit_y = " (N)" if data.physical and data.quantity != "mu" else ""
-        top.errorbar(data.x, data.y, yerr=data.y_err, xerr=data.x_err, fmt="o", ms=4, color="k", label="data")
+        fx, unit_x = _si_axis(data.x, {"friction": "N", "force": "m"}.get(data.kind, "") if data.physical else "")
+        fy, unit_y = _si_axis(data.y, "N" if data.physical and data.quantity != "mu" else "")
+        top.errorbar(data.x * fx, data.y * fy, yerr=None if data.y_err is None else data.y_err * fy,
+                     xerr=None if data.x_err is None else data.x_err * fx, fmt="o", ms=4, color="k", label="data")
         cx, cy = _curve_xy(curve, data)
         order = np.argsort(cx)
-        top.plot(cx[order], cy[order], "-", color="C3", label=f"fit: {result.model}")
+        top.plot(cx[order] * fx, cy[order] * fy, "-", color="C3", label=f"fit: {result.model}")
         log = data.kind == "friction" and np.min(data.x) > 0 and np.max(data.x) / np.min(data.x) > 10
         if log and np.all(data.y > 0):
             top.set_xscale("log")
@@ -77,7 +93,7 @@ def plot_fit(result, path=None, *, fmt=None):
         top.set_title(data.name or data.kind)
         top.legend(loc="best", fontsize="small")
         bottom.axhline(0.0, color="0.6", lw=0.8)
-        bottom.plot(data.x, r, "o", ms=3, color="C0")
+        bottom.plot(data.x * fx, r, "o", ms=3, color="C0")
         bottom.set_xlabel(xl + unit_x)
         bottom.set_ylabel(f"residual ({result.weights[k]})")
     fig.suptitle(f"{result.model}: chi-square {result.chisqr:.4g}, AIC {result.aic:.4g}", fontsize="medium")
