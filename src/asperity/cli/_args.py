@@ -199,7 +199,8 @@ def _paragraph(text: str) -> str:
     return textwrap.fill(text, 78)
 
 
-def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
+def add_contact_arguments(parser: argparse.ArgumentParser, *,
+                          json_shape: str = '{"contact": {...}, "rows": [...]}') -> None:
     """A physical contact: the bodies, the rough surface and the friction law (see :data:`MATERIAL_FORMS`).
 
     Bodies: ``--material --E --nu --material2 --E2 --nu2 --b --w --h --sigma0 --no-adhesion``;
@@ -242,7 +243,7 @@ def add_contact_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-comments", action="store_true",
                         help="a physical result starts with '#' lines stating the contact computed (read the CSV "
                              "with pandas.read_csv(path, comment='#')); this leaves them out. JSON output is "
-                             "{\"contact\": {...}, \"rows\": [...]} either way")
+                             f"{json_shape} either way")
     add_heights_argument(parser)
     add_plasticity_arguments(parser)
 

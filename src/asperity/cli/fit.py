@@ -95,7 +95,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     d.add_argument("--friction-unit", metavar="UNIT", help="unit of friction columns without one")
     d.add_argument("--separation-unit", metavar="UNIT", help="unit of separation columns without one")
     d.add_argument("--drop-nan", action="store_true", help="drop rows holding NaN (empty cells), and count them")
-    add_contact_arguments(parser)
+    add_contact_arguments(parser, json_shape='the fit\'s object with a "contact" key ({"contact": {...}, '
+                                             '"results": [...]} with --compare)')
     o = parser.add_argument_group("output")
     o.add_argument("--format", choices=("table", "json"), default="table", help="output format (default table)")
     o.add_argument("-o", "--output", metavar="FILE", type=output_file, help="write to FILE instead of standard "
