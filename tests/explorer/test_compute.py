@@ -219,3 +219,14 @@ def test_plasticity_size_effect_and_interaction_reach_the_contact():
         compute(_view(**{**base, "plasticity": "jackson-green", "size_effect": True}))
     with pytest.raises(ValueError, match="non-adhesive"):
         compute(_view(**{**base, "adhesion": True, "interaction": "cgp2008"}))
+
+
+def test_a_pull_off_beyond_the_plotted_separations_says_so():
+    """Found by a review: 'pull-off force 5.4e-13 at d/σ = 7.7' with the plot ending at 5."""
+    from asperity.explorer.app import attempt
+    from asperity.explorer.state import state_from_query
+
+    for query, beyond in (("alpha=0.01", True), ("", False)):
+        state, _ = state_from_query(query)
+        row = next(r for r in attempt(state).derived if r[0] == "pull-off force")
+        assert row[1].endswith("(beyond the plotted separations)") == beyond, row

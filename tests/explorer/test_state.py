@@ -179,3 +179,25 @@ def test_parse_value_with_units_and_errors():
 def test_replace_rejects_unknown_fields():
     with pytest.raises(KeyError, match="nosuch"):
         default_state().replace(nosuch=1)
+
+
+@pytest.mark.parametrize("query, needle", [
+    ("mode=physical&E_Pa=1e11", "E (E_Pa) is not used in this view (it applies to the custom material; the "
+                                "link's material is Au); ignored"),
+    ("gamma=0.01&law=jackson-green", "gamma is not used in this view (it applies with law = elastic, not "
+                                     "jackson-green); ignored"),
+    ("H_over_E=0.005", "(it applies with law = jackson-green, not elastic); ignored"),
+    ("mode=physical&plasticity=jackson-green&adhesion=1", "adhesion is not used in this view"),
+])
+def test_a_link_value_the_view_does_not_use_is_said_to_be_ignored(query, needle):
+    """Found by a review: such values vanished from the address without a word."""
+    _, messages = state_from_query(query)
+    assert messages == [f"link: {needle}"] or any(needle in m for m in messages), messages
+
+
+def test_the_pages_own_addresses_carry_no_ignored_values():
+    for query in ("", "mode=physical", "mode=physical&material=custom&E_Pa=1e11", "law=jackson-green"):
+        state, messages = state_from_query(query)
+        assert not messages
+        again, messages = state_from_query(state.to_query())
+        assert again == state and not messages

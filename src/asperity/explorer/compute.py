@@ -172,6 +172,11 @@ def _adhesion_numbers(lam: float, R: float, w: float, E_star: float, h: float, s
              "E* σ^3/2 / (R^1/2 w): roughness defeats adhesion when large")]
 
 
+def _off_plot(state: State, d_bar: float) -> str:
+    """' (beyond the plotted separations)' when the pull-off lies outside the view's d range."""
+    return "" if state["d_min"] <= d_bar <= state["d_max"] else " (beyond the plotted separations)"
+
+
 def _derived(state: State, subject, pull_off) -> list[tuple[str, str, str]]:
     if state.mode == MODES[0]:
         from ..groups import maugis_lambda
@@ -181,7 +186,7 @@ def _derived(state: State, subject, pull_off) -> list[tuple[str, str, str]]:
         lam = maugis_lambda(a, b, g, hb) if g > 0 else math.nan
         s = surface_from_groups(a, b, 1.0, 1.0, 1.0)  # lengths in units of b, stresses in units of E*
         rows = _adhesion_numbers(float(lam), s.R, g, 1.0, hb, s.sigma_s, state["law"])
-        where = f" at d/σ = {pull_off.d:.4g}" if pull_off.exists else ""
+        where = f" at d/σ = {pull_off.d:.4g}{_off_plot(state, pull_off.d)}" if pull_off.exists else ""
         rows.insert(2, ("pull-off force", f"{_fmt(pull_off.force)}{where}", "|P|/(N G b²), most tensile force"))
         if state["law"] != ELASTIC:
             from ..plasticity import plasticity_index
@@ -194,7 +199,7 @@ def _derived(state: State, subject, pull_off) -> list[tuple[str, str, str]]:
             ("N", _fmt(c.N), "asperities (η A0)"), ("force unit", f"{_fmt(c.force_scale)} N", "N G b²")]
     rows += _adhesion_numbers(c.lam, c.surface.R, c.w if c.gamma > 0 else 0.0, c.E_star, c.h, c.surface.sigma_s,
                               c.law)
-    where = f" at d = {pull_off.d:.4g} m" if pull_off.exists else ""
+    where = f" at d = {pull_off.d:.4g} m{_off_plot(state, pull_off.d / c.surface.sigma_s)}" if pull_off.exists else ""
     rows.insert(5, ("pull-off force", f"{_fmt(pull_off.force)} N{where}", "most tensile force"))
     if c.hardness is not None:
         rows.append(("plasticity index ψ", _fmt(c.plasticity_index),

@@ -347,7 +347,7 @@ def state_from_query(query) -> tuple[State, list[str]]:
         query = parse_qs(query.lstrip("?"), keep_blank_values=True)
     spec = fields()
     values = {k: f.default for k, f in spec.items()}
-    messages = []
+    messages, given = [], []
     for key, raw in query.items():
         key = key.decode() if isinstance(key, bytes) else str(key)
         texts = [v.decode("utf-8", "replace") if isinstance(v, bytes) else str(v) for v in raw]
@@ -358,6 +358,19 @@ def state_from_query(query) -> tuple[State, list[str]]:
             continue
         try:
             values[key] = parse_value(spec[key], texts[-1])
+            given.append(key)
         except ValueError as err:
             messages.append(f"link: {err}; using {spec[key].text(spec[key].default)}")
+    for key in dict.fromkeys(given):  # a value the view does not use is said to be ignored, not dropped silently
+        f = spec[key]
+        if f.group is not None and f.group != values.get("heights"):  # (the other mode's values are kept)
+            why = f"it belongs to the heights {f.group}"
+        elif f.when is not None and values.get(f.when[0]) != f.when[1]:
+            why = f"it applies with {f.when[0]} = {f.when[1]}, not {values.get(f.when[0])}"
+        elif key in MATERIAL_KEYS and values["material"] != CUSTOM:
+            why = f"it applies to the custom material; the link's material is {values['material']}"
+        else:
+            continue
+        name = key if (f.label or key) == key else f"{f.label} ({key})"
+        messages.append(f"link: {name} is not used in this view ({why}); ignored")
     return State(values), messages
