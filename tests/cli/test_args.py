@@ -220,3 +220,13 @@ def test_options_that_would_be_ignored_are_refused(capsys):
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and needle in err, err
     assert main(["load", *contact, "--no-adhesion", "--plastic-threshold", "0.5", "--format", "csv"]) == 0
+
+
+def test_the_elastic_law_in_any_case_takes_the_plastic_threshold(capsys):
+    """A review: '--law Elastic --plastic-threshold' was refused as if plastic."""
+    from asperity.cli import main
+
+    contact = ["--material", "Au", "--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2", "--area", "1mm^2",
+               "--load", "1mN", "--format", "csv"]
+    assert main(["load", *contact, "--law", "Elastic", "--plastic-threshold", "0.5"]) == 0
+    capsys.readouterr()

@@ -314,3 +314,29 @@ def test_maugis_dugdale_on_pull_off_data_with_a_radius_per_row():
     data = pull_off_data(F, conditions={"R_m": R}, physical=True)
     res = fit_pull_off(data, "md", material="Si", ci="wald")
     assert "lam" not in res.derived and res.values["w_J_m2"] > 0
+
+
+@pytest.mark.parametrize("ci", ["wald", "profile"])
+def test_nano_scaled_parameters_report_in_si_units(ci):
+    """The offset P0_N (newtons) is fitted in nanonewtons inside the engine; its value, standard
+    error and 95 % interval must be those of the same data fitted dimensionlessly (P0 in the
+    model's own unit, not scaled), times 1e-9 (a review: removing either conversion went
+    unnoticed by the other tests)."""
+    rng = np.random.default_rng(8)
+    P = np.linspace(1.0, 50.0, 15)
+    F = 0.3 * (P + 4.0) * (1 + 0.02 * rng.standard_normal(P.size))
+    plain = fit_friction_load(friction_load_data(P, F), "amontons", ci=ci)
+    si = fit_friction_load(friction_load_data(P * 1e-9, F * 1e-9, physical=True), "amontons", ci=ci)
+    a, b = plain.parameters["P0"], si.parameters["P0_N"]
+    assert b.value == pytest.approx(a.value * 1e-9, rel=1e-6)
+    assert b.stderr == pytest.approx(a.stderr * 1e-9, rel=1e-4)
+    np.testing.assert_allclose(b.ci95, np.array(a.ci95) * 1e-9, rtol=1e-4)
+    assert si.parameters["mu0"].ci95 == pytest.approx(plain.parameters["mu0"].ci95, rel=1e-4)
+
+
+def test_an_expression_may_name_a_scaled_parameter_defined_after_it():
+    """A review: 'mu0 = P0_N * k' raised NameError (P0_N was defined after the expression)."""
+    P = np.linspace(1, 50, 15) * 1e-9
+    res = fit_friction_load(friction_load_data(P, 0.3 * (P + 4e-9), physical=True), "amontons",
+                            expr={"mu0": "P0_N*7.5e7"}, ci="wald")
+    assert res.values["P0_N"] == pytest.approx(4e-9, rel=1e-9) and res.values["mu0"] == pytest.approx(0.3, rel=1e-9)

@@ -203,7 +203,7 @@ def contact_from_args(args):
         if given:
             raise UsageError(f"{', '.join(given)} describe the adhesion, which --no-adhesion turns off: give one "
                              "or the other")
-    if threshold is not None and args.law not in (None, "elastic"):
+    if threshold is not None and args.law is not None and args.law.strip().lower() != "elastic":
         raise UsageError(f"--plastic-threshold applies to the elastic law (the note when asperities pass yield); "
                          f"--law {args.law} models the yield itself")
     return PhysicalContact(material_from_args(args), surface_from_args(args),

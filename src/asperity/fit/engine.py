@@ -234,8 +234,11 @@ class Problem:
         """The :class:`lmfit.Parameters` of the problem (see the module docstring)."""
         lmfit = require("lmfit", purpose="fitting", extra="fit")
         params = lmfit.Parameters()
-        later = []
+        # the linear names of log and scaled parameters first, then the user's expressions (which
+        # may name any of them, in any order: found by a review, 'mu0 = P0_N * k' failed)
+        defined, expressions = [], []
         for p in self.params.values():
+            later = defined if p.expr is None else expressions
             if p.log:  # within +-LOG_LIMIT decades, so that 10**x stays finite
                 lo = max(math.log10(p.lo), -LOG_LIMIT) if p.lo > 0 else -LOG_LIMIT
                 hi = min(math.log10(p.hi), LOG_LIMIT) if math.isfinite(p.hi) else LOG_LIMIT
@@ -255,7 +258,7 @@ class Problem:
                 params.add(p.name, value=p.value, min=p.lo, max=p.hi, vary=p.vary)
             else:
                 later.append((p.name, p.expr))
-        for name, expr in later:
+        for name, expr in defined + expressions:
             params.add(name, expr=expr)
         return params
 
