@@ -222,3 +222,20 @@ def test_a_nanometre_offset_of_a_force_curve_is_recovered():
         covered += all(lo <= true <= hi for (lo, hi), true in
                        ((res.parameters["d0_m"].ci95, d0), (res.parameters["R_m"].ci95, radius)))
     assert covered >= 16, covered
+
+
+def test_a_varied_offset_without_a_start_starts_at_the_contact_edge():
+    """A review: varied from its default 0, the offset of a Hertz curve at positive
+    separations stayed at 0 ('undetermined'); it now starts where the data show contact."""
+    from asperity.fit import fit_force_separation, force_separation_data
+
+    d0, radius = 2e-9, 20e-9
+    d = np.linspace(0.5e-9, 1.95e-9, 30)
+    F = 4.0 / 3.0 * E_STAR * math.sqrt(radius) * (d0 - d) ** 1.5
+    data = force_separation_data(d, F * (1 + 0.02 * np.random.default_rng(3).standard_normal(d.size)),
+                                 physical=True)
+    res = fit_force_separation(data, "hertz", fix={"E_star_Pa": E_STAR, "R_m": radius}, vary=["d0_m"], ci="wald")
+    assert res.values["d0_m"] == pytest.approx(d0, rel=0.01) and res.parameters["d0_m"].method == "wald"
+    held = fit_force_separation(data, "hertz", fix={"E_star_Pa": E_STAR, "d0_m": 0.0}, vary=["R_m"],
+                                start={"R_m": radius}, ci="wald")
+    assert held.values["d0_m"] == 0.0  # not varied: still held at 0

@@ -62,6 +62,9 @@ _SCALED_PREFIX = "scaled_"
 #: differences step by at least 1.5e-8 of the fitted value's unit, which for an offset of a
 #: few nanometres in metres was 15 nm (found by a review: d0_m could not be fitted).
 SCALED_UNITS = {"m": 1e-9, "N": 1e-9}
+#: Parameters whose default is a held value (0) but which, varied without a start, start where
+#: the data say (the single-asperity laws' force-curve offset: from 0 it may be undetermined).
+DATA_STARTS = frozenset({"d0_m"})
 _CACHE = 64
 
 
@@ -351,6 +354,8 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
             p.vary, p.value = False, _number(fix[name], f"fix {name}")
         if name in start:
             p.value = _number(start[name], f"start {name}")
+        elif p.vary and name not in fix and p.spec.name in DATA_STARTS:
+            p.value = None  # varied without a start: the model's data-driven one (_fill_starts)
         if name in expr:
             p.expr = str(expr[name])
         if name in bounds:

@@ -67,8 +67,16 @@ class _Law(FitModel):
         return out
 
     def start(self, data, values: dict) -> dict:
-        """Data-driven starts for the parameters still without a value, given the others."""
+        """Data-driven starts for the parameters still without a value, given the others.
+
+        A varied offset ``d0_m`` without a start (the engine leaves it empty, :data:`DATA_STARTS`)
+        starts at the largest separation where the force is still 2 % of its largest
+        compressive value: the contact edge, near which the model carries force (from 0, data
+        at positive separations carry none and the offset would be undetermined)."""
         v = dict(values)
+        if "d0_m" in v and v["d0_m"] is None and data.kind == "force":
+            pressed = data.y > 0.02 * float(np.max(data.y)) if np.max(data.y) > 0 else np.zeros(len(data), bool)
+            v["d0_m"] = float(np.max(data.x[pressed])) if pressed.any() else float(np.max(data.x))
         R, E = v.get("R_m"), v.get("E_star_Pa")
         if R is None or E is None:
             return v
