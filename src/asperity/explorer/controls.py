@@ -150,7 +150,7 @@ class FlagControl:
     def __init__(self, f: Field, value, on_value, on_error, *, width: int = 300):
         self.field = f
         self._quiet = False
-        self.widget = Checkbox(label=f"{f.key}: {f.help}", active=bool(value), width=width - 10,
+        self.widget = Checkbox(label=f"{f.label or f.key}: {f.help}", active=bool(value), width=width - 10,
                                name=f"input:{f.key}", css_classes=[f"asp-input-{f.key}"])
         self.widget.on_change("active", lambda attr, old, new: None if self._quiet else on_value(f.key, bool(new)))
         self.layout = self.widget

@@ -144,8 +144,8 @@ class Plots:
             y = {"force": C["P"], "friction": C["F"], "fraction": C["contacts"]}.get(key, C.get(key))
             fig.xaxis.axis_label = axis_label(x, physical)
             fig.yaxis.axis_label = axis_label(y, physical and key != "fraction")
-            fig.title.text = title(y, physical and key != "fraction") + (" (tensile part dashed)"
-                                                                          if key == "force" else "")
+            fig.title.text = title(y, physical and key != "fraction")  # the legend tells compressive from tensile
+            fig.title.text_font_size = "12px"  # the registry's longest meanings fit the plot's width
         for key in ("force", "friction"):
             self.figures[key].xaxis.formatter = (CustomJSTickFormatter(code=_SI_TICKS) if physical
                                                  else BasicTickFormatter())
