@@ -31,7 +31,7 @@ from bokeh.models import Button, CustomJS, Div, InlineStyleSheet, RadioButtonGro
 from . import compute as _compute
 from .controls import make_control
 from .panels import optional_panels
-from .plots import Plots
+from .plots import SIZE, Plots
 from .state import (
     CUSTOM,
     MATERIAL_KEYS,
@@ -156,9 +156,10 @@ class ExplorerSession:
         # Fixed heights: new text never moves the plots (a moved plot repaints; updates stay quick).
         # Fixed sizes and content written by _PANELS_JS: new text never re-lays the page out.
         box = '<div class="asp-box"></div>'
-        self.messages = Div(text=box, width=1080, height=MESSAGES_HEIGHT, name="messages", css_classes=["asp-messages"],
+        wide = 3 * SIZE["width"]  # the plots' row: nothing reaches past it
+        self.messages = Div(text=box, width=wide, height=MESSAGES_HEIGHT, name="messages", css_classes=["asp-messages"],
                             stylesheets=[InlineStyleSheet(css=_STYLE)], styles={"overflow-y": "auto"})
-        self.derived = Div(text=box, width=1080, height=DERIVED_HEIGHT[MODES[0]], name="derived",
+        self.derived = Div(text=box, width=wide, height=DERIVED_HEIGHT[MODES[0]], name="derived",
                            css_classes=["asp-derived"], stylesheets=[InlineStyleSheet(css=_STYLE)])
         self.page = PageState(query="", name="page")
         self.page.js_on_change("query", CustomJS(args={"page": self.page}, code=_URL_JS))
