@@ -57,6 +57,9 @@ class FitPanel:
         :mod:`asperity.fit` (its ``fit_friction_load`` and ``read_data``).
     """
 
+    #: The run button's label (the panel's messages name it).
+    FIT_LABEL = "Fit from the view's values"
+
     def __init__(self, fit_module):
         from bokeh.layouts import column, row
         from bokeh.models import Button, Checkbox, ColumnDataSource, Div, FileInput, HoverTool
@@ -74,7 +77,7 @@ class FitPanel:
                                      "(asperity.fit; about a second a fit)", active=False,
                                css_classes=["asp-toggle-fit"])
         self.upload = FileInput(accept=".csv,.txt,.dat", name="fit:file", css_classes=["asp-fit-file"])
-        self.run_button = Button(label="Fit from the view's values", name="fit:run", width=220,
+        self.run_button = Button(label=self.FIT_LABEL, name="fit:run", width=220,
                                  css_classes=["asp-fit-run"], disabled=True)
         self.use_button = Button(label="Use the fitted values", name="fit:use", width=180,
                                  css_classes=["asp-fit-use"], disabled=True)
@@ -177,7 +180,9 @@ class FitPanel:
             self._show_view(None if model is None else model.load_curve(self._loads()))
         except ValueError:  # loads beyond the view's domain (more tensile than its pull-off)
             self._show_view(None)
-        self._say(f"{html.escape(filename)}: {data.x.size} points read; press <b>Fit</b>.", escape=False)
+        points = f"{data.x.size} point{'s' if data.x.size != 1 else ''}"
+        self._say(f"{html.escape(filename)}: {points} read; press <b>{html.escape(self.FIT_LABEL)}</b>.",
+                  escape=False)
 
     def run_fit(self):
         """Fit alpha, beta, gamma from the view's values; show the fitted curve and values.
