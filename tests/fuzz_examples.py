@@ -278,7 +278,7 @@ SKIP = {
     # The fitting engine's steps: called by fit_problem with objects it builds and checks.
     **{name: "a step of the fitting engine, called with the objects asperity.fit builds (its entry points "
              "fit_friction_load, fit_force_separation, fit_pull_off, fit_joint, compare_models are fuzzed)"
-       for name in ("asperity.fit.engine.build_problem", "asperity.fit.runner.run", "asperity.fit.runner.fit_problem",
+       for name in ("asperity.fit.build.build_problem", "asperity.fit.runner.run", "asperity.fit.runner.fit_problem",
                     "asperity.fit.uncertainty.central_jacobian", "asperity.fit.uncertainty.null_directions",
                     "asperity.fit.uncertainty.pseudo_covariance", "asperity.fit.uncertainty.correlated_pairs",
                     "asperity.fit.uncertainty.wald_interval", "asperity.fit.uncertainty.wald_reliable",
@@ -341,7 +341,8 @@ SKIP = {
                     "asperity.validation.notes.model_warning_notes")},
     **{name: "a step of the fitting engine's restarts, called by fit_problem on its own results"
        for name in ("asperity.fit.runner.suspicious", "asperity.fit.runner.restart_points")},
-    "asperity.fit.engine.parameter_names": "checks vary/shared for the fitting engine (its callers are fuzzed)",
+    "asperity.fit.build.parameter_names": "checks vary/shared for the fitting engine (its callers are fuzzed)",
+    "asperity.fit.engine.resolve_weights": "resolves the weights option (the fits are fuzzed)",
     "asperity.validation.progress.progress_bar": "writes a progress report; its loads come from bem_contact",
     # The explorer's page: Bokeh objects driven by the page's State (tests/explorer, in a browser).
     **{name: "a part of the explorer's Bokeh page, driven by a validated State (tests/explorer)"

@@ -184,7 +184,7 @@ def test_robust_loss_resists_an_outlier():
 
 
 def test_x_uncertainty_enters_by_effective_variance():
-    from asperity.fit.engine import build_problem
+    from asperity.fit.build import build_problem
     from asperity.fit.models import get_model
 
     P = np.linspace(1.0, 10.0, 12)

@@ -9,7 +9,7 @@ AIC only charges it 2 per extra parameter.
 from __future__ import annotations
 
 from .base import FitModel
-from .engine import parameter_names
+from .build import parameter_names
 from .models import MODELS, contact_refusal, get_model, material_refusal, model_class
 from .read import as_dataset
 from .result import Comparison

@@ -18,7 +18,8 @@ from scipy import stats
 from .._optional import require
 from .._validation import check_integer, check_scalar_positive
 from .._warnings import AsperityWarning
-from .engine import LOSSES, WEIGHTS, Problem, build_problem
+from .build import build_problem
+from .engine import LOSSES, WEIGHTS, Problem
 from .result import FitResult, ParameterEstimate
 from .uncertainty import (
     PROFILE_BUDGET,
@@ -187,7 +188,7 @@ def restart_points(params):
 def fit_problem(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
                 weights="auto", loss="linear", ci="auto", grid=200, restarts="auto",
                 profile_budget=PROFILE_BUDGET) -> FitResult:
-    """Build the problem of ``datasets`` and ``models`` (:func:`~asperity.fit.engine.build_problem`); fit it.
+    """Build the problem of ``datasets`` and ``models`` (:func:`~asperity.fit.build.build_problem`); fit it.
 
     The options are checked here, before any work: a ValueError or TypeError names the option.
     """
