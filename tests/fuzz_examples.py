@@ -109,7 +109,7 @@ def valid_calls(tmp: str) -> dict:
         "asperity.maugis_dugdale_load.penetration_in_maugis_units": lambda: {"delta": [1e-10, 1e-9], **law},
         # elastic-plastic asperities and the size effect
         "asperity.jackson_green.jg_yield_coefficient": lambda: {"nu": 0.3},
-        "asperity.jackson_green.jg_yield_from_hardness": lambda: {"H": 2.84},
+        "asperity.jackson_green_hardness.jg_yield_from_hardness": lambda: {"H": 2.84},
         "asperity.jackson_green.jg_critical_interference": lambda: {"S_y": 1.0, "E_star": 1e3, "R": 1.0, "nu": 0.3},
         "asperity.jackson_green.jg_critical_load": lambda: {"S_y": 1.0, "E_star": 1e3, "R": 1.0, "nu": 0.3},
         "asperity.jackson_green.jg_critical_area": lambda: {"S_y": 1.0, "E_star": 1e3, "R": 1.0, "nu": 0.3},
@@ -117,7 +117,7 @@ def valid_calls(tmp: str) -> dict:
         "asperity.jackson_green.jg_check_yield_strain": lambda: {"e_y": 1e-3},
         "asperity.jackson_green.jg_area_exponent": lambda: {"e_y": 1e-3},
         "asperity.jackson_green.jg_radius_ratio": lambda: {"area_ratio": 4.0, "e_y": 1e-3, "nu": 0.3},
-        "asperity.jackson_green.jg_hardness_ratio": lambda: {"a_over_R": [0.0, 0.1]},
+        "asperity.jackson_green_hardness.jg_hardness_ratio": lambda: {"a_over_R": [0.0, 0.1]},
         "asperity.jackson_green_fits.jg_area_fit": lambda: {"omega_star": [1.9, 5.0], "e_y": 5e-3},
         "asperity.jackson_green_fits.jg_area": lambda: {"omega_star": [1.0, 10.0], "e_y": 1e-3},
         "asperity.jackson_green_fits.jg_load_fit": lambda: {"omega_star": [1.9, 5.0], "e_y": 1e-3, "nu": 0.3},

@@ -12,7 +12,8 @@ Layers, each importing only downward:
   :mod:`~asperity.jkr`, :mod:`~asperity.dmt`, :mod:`~asperity.maugis_dugdale`
   (:mod:`~asperity.maugis_dugdale_load` under load control), :mod:`~asperity.cos`,
   :mod:`~asperity.amontons`, :mod:`~asperity.jackson_green` and
-  :mod:`~asperity.jackson_green_fits` (elastic-plastic), :mod:`~asperity.nix_gao` (size effect)
+  :mod:`~asperity.jackson_green_fits`,
+  :mod:`~asperity.jackson_green_hardness` (elastic-plastic), :mod:`~asperity.nix_gao` (size effect)
 * dimensionless groups and height statistics: :mod:`~asperity.groups`,
   :mod:`~asperity.heights` (Gaussian, exponential, Weibull, Pearson III, Johnson, mixture,
   empirical summit heights)
@@ -102,6 +103,7 @@ _SUBMODULES = (
     "interaction",
     "jackson_green",
     "jackson_green_fits",
+    "jackson_green_hardness",
     "jkr",
     "materials",
     "maugis_dugdale",

@@ -18,19 +18,20 @@ quantity            definition                                            functi
 :math:`B`           :math:`0.14\,e^{23 e_y}`                              :func:`jg_area_exponent`
 :math:`A/A_c`       :math:`\omega^*(\omega^*/1.9)^B` (:math:`\ge 1.9`)     ``jackson_green_fits.jg_area_fit``
 :math:`a/R`         :math:`(\pi C e_y/2)(A/A_c)^{1/2}`                    :func:`jg_radius_ratio`
-:math:`H_G/S_y`     :math:`2.84[1 - e^{-0.82(a/R)^{-0.7}}]`               :func:`jg_hardness_ratio`
+:math:`H_G/S_y`     :math:`2.84[1 - e^{-0.82(a/R)^{-0.7}}]`               ``jackson_green_hardness.jg_hardness_ratio``
 :math:`P/P_c`       :math:`e^{-\omega^{*5/12}/4}\omega^{*3/2}
                     + \tfrac{4H_G}{CS_y}[1 - e^{-\omega^{*5/9}/25}]
                     \,\omega^*`                                           ``jackson_green_fits.jg_load_fit``
 ==================  ====================================================  ===================================
 
 The fits and the law built from them (Hertz below the transitions, the fits above, with the
-switch of the load moved to where it is continuous) are in :mod:`asperity.jackson_green_fits`.
+switch of the load moved to where it is continuous) are in :mod:`asperity.jackson_green_fits`; the hardness in
+:mod:`asperity.jackson_green_hardness` (its names are importable from here too).
 
 **Hardness.**  JG's geometric hardness tends to :math:`2.84\,S_y` for small contacts
 (:math:`a/R \to 0`, all asperity contacts here), so a hardness :math:`H` (the mean contact
 pressure of a fully plastic small contact) gives :math:`S_y = H/2.84`
-(:func:`jg_yield_from_hardness`; Tabor's classical :math:`H \approx 2.8\,Y` to 1.4 %).
+(:func:`~asperity.jackson_green_hardness.jg_yield_from_hardness`; Tabor's classical :math:`H \approx 2.8\,Y` to 1.4 %).
 
 **Ranges.**  JG's :math:`C(\nu)` is fitted for :math:`0 \le \nu \le 0.5`, so the functions
 taking :math:`\nu` accept :math:`0 \le \nu < 0.5`; the yield strain :math:`e_y = S_y/E^*`
@@ -58,6 +59,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._validation import check_finite_result, check_interval, check_nonnegative, check_positive
+from .jackson_green_hardness import HG_LIMIT, HG_POWER, HG_RATE, jg_hardness_ratio, jg_yield_from_hardness
 
 __all__ = [
     "C_PREFACTOR",
@@ -91,12 +93,6 @@ OMEGA_T = 1.9
 B_PREFACTOR = 0.14
 #: JG 2005: rate of the area exponent in the yield strain :math:`e_y = S_y/E^*`.
 B_EXPONENT = 23.0
-#: JG 2005: small-contact limit of the geometric hardness, :math:`H_G/S_y \to 2.84`.
-HG_LIMIT = 2.84
-#: JG 2005: :math:`H_G/S_y = 2.84[1 - e^{-0.82(a/R)^{-0.7}}]`, the rate 0.82.
-HG_RATE = 0.82
-#: JG 2005: the power 0.7 of :math:`a/R` in the geometric hardness.
-HG_POWER = 0.7
 #: Largest yield strain :math:`S_y/E^*` accepted: up to it the load fit crosses Hertz above yield for
 #: every :math:`0 \le \nu < 0.5` (above about 0.065 it no longer does for :math:`\nu \to 0.5`).
 E_Y_MAX = 0.05
@@ -160,42 +156,6 @@ def jg_yield_coefficient(nu):
     Jackson & Green (2005), critical interference; Green (2005).
     """
     return C_PREFACTOR * np.exp(C_EXPONENT * jg_check_poisson(nu))
-
-
-def jg_yield_from_hardness(H):
-    r"""Yield strength from hardness, :math:`S_y = H/2.84` (JG's small-contact hardness limit).
-
-    .. math::
-        S_y = H / 2.84
-
-    JG's geometric hardness :math:`H_G/S_y = 2.84[1 - e^{-0.82(a/R)^{-0.7}}]` tends to 2.84
-    for the small contacts of asperities, so the hardness of the law is :math:`2.84\,S_y`.
-
-    Parameters
-    ----------
-    H : array_like
-        Hardness :math:`H > 0`, any pressure unit (or dimensionless, e.g. :math:`H/E^*`).
-
-    Returns
-    -------
-    ndarray
-        :math:`S_y` in the unit of ``H``, the shape of ``H``.
-
-    Raises
-    ------
-    ValueError
-        If ``H`` is not real, finite and positive.
-
-    Examples
-    --------
-    >>> float(jg_yield_from_hardness(2.84))
-    1.0
-
-    References
-    ----------
-    Jackson & Green (2005), geometric hardness; Tabor (1951).
-    """
-    return check_positive(H, "H") / HG_LIMIT
 
 
 def jg_critical_interference(S_y, E_star, R, nu):
@@ -404,41 +364,3 @@ def jg_radius_ratio(area_ratio, e_y, nu):
     """
     ratio = check_nonnegative(area_ratio, "area_ratio")
     return 0.5 * np.pi * jg_yield_coefficient(nu) * jg_check_yield_strain(e_y) * np.sqrt(ratio)
-
-
-def jg_hardness_ratio(a_over_R):
-    r"""JG's geometric hardness, :math:`H_G/S_y = 2.84[1 - e^{-0.82(a/R)^{-0.7}}]`.
-
-    .. math::
-        \frac{H_G}{S_y} = 2.84\Big[1 - \exp\big(-0.82\,(a/R)^{-0.7}\big)\Big]
-
-    The mean pressure of a fully plastic contact falls as the contact grows relative to the
-    sphere; for the small contacts of asperities it is :math:`2.84\,S_y`.
-
-    Parameters
-    ----------
-    a_over_R : array_like
-        Contact radius over sphere radius, :math:`a/R \ge 0` (0 gives the limit 2.84).
-
-    Returns
-    -------
-    ndarray
-        :math:`H_G/S_y`, the shape of ``a_over_R``.
-
-    Raises
-    ------
-    ValueError
-        If ``a_over_R`` is not real, finite and >= 0.
-
-    Examples
-    --------
-    >>> [round(float(x), 4) for x in jg_hardness_ratio([0.0, 0.1, 1.0])]
-    [2.84, 2.7934, 1.5892]
-
-    References
-    ----------
-    Jackson & Green (2005), geometric hardness.
-    """
-    r = check_nonnegative(a_over_R, "a_over_R")
-    with np.errstate(divide="ignore"):
-        return HG_LIMIT * (1.0 - np.exp(-HG_RATE * r ** (-HG_POWER)))
