@@ -135,3 +135,16 @@ def test_separations_outside_the_range_are_refused():
 def test_the_gaussian_keeps_its_own_path():
     tab = Tabulation(ModelParameters(ALPHA, BETA), -1.0, 1.0, GAUSSIAN)
     assert tab.height_sums is None and tab.heights.fast_sums
+
+
+@pytest.mark.parametrize("case", list(CASES))
+@pytest.mark.parametrize("gamma", [0.0, 1e-3])
+def test_contact_fraction_never_passes_one(case, gamma):
+    # deep in contact every asperity touches: n/N = integral of phi = 1, and the quadrature's
+    # round-off (a few ulps above 1 before the clip) must not make it more than all of them
+    dist = fast(case)
+    tab = Tabulation(ModelParameters(ALPHA, BETA, gamma), -25.0, 5.0, dist)
+    d = np.linspace(-25.0, 5.0, 3001)
+    n = tab.sums(d, order=1)[0][:, 0]
+    assert np.all(n <= 1.0) and np.all(n >= 0.0)
+    assert n[0] == pytest.approx(1.0, abs=1e-12)

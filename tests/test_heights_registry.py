@@ -73,6 +73,8 @@ def test_empirical_and_best_read_a_file(tmp_path):
     ("lognormal", "unknown distribution 'lognormal'; valid: gaussian"),
     ("weibull", "missing parameter(s) skew"),
     ("weibull:", "weibull needs its parameters: weibull:skew=SKEW"),
+    ("gaussian:", "nothing after ':' in 'gaussian:'; gaussian has no parameters (spelling gaussian)"),
+    ("exponential: ", "nothing after ':' in 'exponential: '; exponential has no parameters"),
     ("weibull:skew", "expected key=value"),
     ("weibull:skew=", "expected key=value"),
     ("weibull:skew=abc", "skew must be a number, got 'abc'"),

@@ -165,6 +165,9 @@ def parse_heights(spec) -> HeightDistribution:
             params[k] = float(v)
         except ValueError:
             raise ValueError(f"heights: {k} must be a number, got {v.strip()!r} in {spec!r}") from None
-    if colon and not params and DISTRIBUTIONS[key].parameters:
-        raise ValueError(f"heights: {key} needs its parameters: {SPELLINGS[key]}")
+    if colon and not params:
+        if DISTRIBUTIONS[key].parameters:
+            raise ValueError(f"heights: {key} needs its parameters: {SPELLINGS[key]}")
+        raise ValueError(f"heights: nothing after ':' in {spec!r}; {key} has no parameters (spelling "
+                         f"{SPELLINGS[key]})")
     return distribution(key, **params)
