@@ -153,6 +153,8 @@ def _write_3d(path):
     (lambda p: _write_3d(p / "cube.npy"), ["--size", "1um", "--unit", "nm"], "3-d"),
     (lambda p: write(p / "tiny.npy", np.ones((4, 30))), ["--size", "1um", "--unit", "nm"], "too few points"),
     (lambda p: p, ["--size", "1um", "--unit", "nm"], "is a directory"),
+    (lambda p: write(p / "huge.npy", np.random.default_rng(1).normal(size=(16, 16)) * 1e300),
+     ["--size", "1um,1um", "--unit", "nm"], "cannot be a surface's (at most 1e+50 m: the spectral moments would"),
 ])
 def test_errors_are_one_line(capsys, tmp_path, make, args, needle):
     path = make(tmp_path)

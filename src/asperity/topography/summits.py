@@ -47,6 +47,8 @@ MIN_POINTS = 8
 #: Largest ratio of the detrended rms height to the largest absolute height that counts as
 #: a flat (or tilted) plane made of rounding noise; see the module docstring.
 FLAT_RTOL = 1e-7
+#: Largest absolute height accepted [m]: far above any surface, far below the moments' overflow (h^2/dx^4).
+MAX_HEIGHT = 1e50
 #: The three GW summit parameters, named as in :data:`asperity.quantities.PHYSICAL_PARAMETERS`.
 GW_PARAMETERS = {name: PHYSICAL_PARAMETERS[name] for name in ("sigma_s", "R", "eta")}
 
@@ -173,7 +175,7 @@ def prepare(topography):
         For a nonuniform line scan, missing physical sizes, undefined data, fewer than
         :data:`MIN_POINTS` points along an axis, or a flat (or tilted-plane) surface
         whose detrended rms height is at most :data:`FLAT_RTOL` of its largest
-        absolute height.
+        absolute height, or heights above :data:`MAX_HEIGHT` metres (a wrong unit).
     """
     if not all(hasattr(topography, attr) for attr in ("heights", "dim", "nb_grid_pts", "detrend")):
         raise TypeError(f"topography must be a SurfaceTopography topography or line scan, "
@@ -204,6 +206,9 @@ def _check_not_flat(raw, detrended):
     if not (np.all(np.isfinite(raw)) and np.all(np.isfinite(detrended))):
         raise ValueError("heights must be finite (no NaN or infinity)")
     scale = float(np.max(np.abs(raw)))
+    if scale > MAX_HEIGHT:
+        raise ValueError(f"heights up to {scale:.3g} m cannot be a surface's (at most {MAX_HEIGHT:g} m: the spectral "
+                         f"moments would overflow); check the height unit")
     rms = scale * float(np.sqrt(np.mean((detrended / scale) ** 2))) if scale > 0 else 0.0
     if rms <= FLAT_RTOL * scale:
         raise ValueError(f"the surface is flat: after removing its mean plane the rms height is {rms:.3g} m, "
