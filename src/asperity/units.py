@@ -188,19 +188,19 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
     return float(value)
 
 
-#: A number followed by a unit that starts with a letter (not '/', '*' or '^': those go to pint whole).
+#: A number followed by a unit that starts with a letter, '/' or '1/' ('1/um^2', '5 1/um^2'; '*', '^' go to pint).
 _NUMBER_UNIT = re.compile(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(?![eE][+-]?\d)"
-                          r"([A-Za-z\u00b5\u03bc\u00c5\u212b].*)$")
+                          r"((?:[A-Za-z\u00b5\u03bc\u00c5\u212b/]|1\s*/).*)$")
 
 
 def _decimal_scaled(number: float, unit_text: str, unit: str, name: str, registry) -> float | None:
     """``number`` times the unit ``unit_text`` in ``unit``, or None if ``unit_text`` is not one
     plain unit (an expression such as 'm + 2 m': the whole text then goes to pint).  A decimal
-    factor (an SI prefix: 1e-9 for nm) divides by the exact power of ten instead of
-    multiplying by its rounded reciprocal, so that '60nm' is 6e-08 as '6e-8m' is, not
-    6.000000000000001e-08."""
+    factor (an SI prefix: 1e-9 for nm; 1e12 for um^-2) divides by the exact power of ten
+    instead of multiplying by its rounded reciprocal, so that '60nm' is 6e-08 as '6e-8m' is,
+    not 6.000000000000001e-08, and '1/um^2' is 1e12."""
     try:
-        one = registry.parse_expression(unit_text)
+        one = registry.parse_expression("1" + unit_text if unit_text.startswith("/") else unit_text)
     except Exception:  # noqa: BLE001 - pint's parser raises many kinds: the whole text decides
         return None
     if not is_quantity(one) or one.magnitude != 1:
@@ -211,7 +211,9 @@ def _decimal_scaled(number: float, unit_text: str, unit: str, name: str, registr
         return None
     if factor > 0 and math.isfinite(factor):
         k = round(math.log10(factor))
-        if abs(k) <= 22 and factor == float(f"1e{k}"):  # 10**|k| is exact up to 1e22
+        # pint's factor of a decimal unit may be a few ulps off its power of ten ('um^-2':
+        # 1.0000000000000001e12); no unit of the registry lies that close to one without being it
+        if abs(k) <= 22 and abs(factor / float(f"1e{k}") - 1.0) < 1e-14:  # 10**|k| is exact up to 1e22
             with np.errstate(all="ignore"):
                 return number / 10.0 ** -k if k < 0 else number * 10.0 ** k
     return float(_convert(number * one, unit, name))
