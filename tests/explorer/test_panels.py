@@ -109,3 +109,16 @@ def test_real_cycle_panel():
     assert s.failure is None, s.failure
     ref = cycle(0.003, 1000.0, 0.0, preload=1e5, n=30, law=JacksonGreen(0.003, 2.0))
     np.testing.assert_allclose(cycle_of(s).sources["approach"].data["P"], ref.approach.P, rtol=1e-12)
+
+
+@pytest.mark.skipif(not HAS_CYCLE, reason="asperity.cycle is not installed (the panel is optional)")
+def test_cycle_axes_use_si_prefixes_in_physical_mode():
+    # found by a review: the cycle's d axis read 2e-9 (m) where the other plots read '2 n'
+    from bokeh.models import BasicTickFormatter, CustomJSTickFormatter
+
+    s = ExplorerSession(Document(), "mode=physical&n=30", runner=immediate_runner)
+    panel = cycle_of(s)
+    assert panel.figure.xaxis.axis_label == "d (m)"
+    assert all(isinstance(a.formatter, CustomJSTickFormatter) for a in (panel.figure.xaxis, panel.figure.yaxis))
+    s.mode.active = 0
+    assert all(isinstance(a.formatter, BasicTickFormatter) for a in (panel.figure.xaxis, panel.figure.yaxis))

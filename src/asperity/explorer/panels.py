@@ -27,6 +27,7 @@ import importlib.util
 import numpy as np
 
 from .compute import asperity_law, friction_law, height_distribution, model_gamma
+from .plots import si_tick_formatter
 from .state import MODES
 
 __all__ = ["OPTIONAL_PANELS", "optional_panels", "cycle_panel", "CyclePanel"]
@@ -86,6 +87,8 @@ class CyclePanel:
         """Axis labels in the units of a mode."""
         self.figure.xaxis.axis_label = "d (m)" if physical else "d/σ"
         self.figure.yaxis.axis_label = "P (N)" if physical else "P/NGb²"
+        for axis in (self.figure.xaxis, self.figure.yaxis):  # '2 n' (nm, nN) as the other plots, not 2e-9
+            axis.formatter = si_tick_formatter(physical)
 
     def compute(self, result):
         """The cycle of a view, from the library."""

@@ -33,7 +33,7 @@ from ..physical import AREA_FRACTION_CAUTION
 from ..quantities import CURVE_COLUMNS
 from .labels import axis_label, title
 
-__all__ = ["Plots", "LOAD_COLUMNS", "SEPARATION_COLUMNS"]
+__all__ = ["Plots", "LOAD_COLUMNS", "SEPARATION_COLUMNS", "si_tick_formatter"]
 
 LOAD_COLUMNS = ("d", "P", "F", "mu", "area", "pressure", "contacts", "fraction", "area_fraction")
 SEPARATION_COLUMNS = ("d", "P", "F", "mu", "area", "pressure", "contacts", "P_compressive", "P_tensile")
@@ -62,6 +62,11 @@ const top = Math.max(...ticks.map(Math.abs));
 const e = Math.min(9, Math.max(-15, 3 * Math.floor(Math.log10(top) / 3)));
 return String(Number((tick / Math.pow(10, e)).toPrecision(4))) + ' ' + prefixes[String(e)];
 """
+
+
+def si_tick_formatter(physical: bool):
+    """Tick formatter of a linear axis: SI prefixes in physical mode (the unit is in the label), plain otherwise."""
+    return CustomJSTickFormatter(code=_SI_TICKS) if physical else BasicTickFormatter()
 
 
 def _log_ticks(axis) -> None:
@@ -147,8 +152,7 @@ class Plots:
             fig.title.text = title(y, physical and key != "fraction")  # the legend tells compressive from tensile
             fig.title.text_font_size = "12px"  # the registry's longest meanings fit the plot's width
         for key in ("force", "friction"):
-            self.figures[key].xaxis.formatter = (CustomJSTickFormatter(code=_SI_TICKS) if physical
-                                                 else BasicTickFormatter())
+            self.figures[key].xaxis.formatter = si_tick_formatter(physical)
         self.figures["fraction"].yaxis.axis_label = "n/N, A/A0" if physical else axis_label(C["contacts"], False)
         self.figures["fraction"].title.text = "contact fraction"
         for item in (self.area_fraction, self.limit, self.fraction_legend):
