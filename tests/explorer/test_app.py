@@ -316,3 +316,15 @@ def test_the_physical_jackson_green_law_has_no_adhesion_control():
     assert "no adhesion: Jackson-Green" in s.page.derived_html
     s.controls["plasticity"].widget.value = "elastic"
     assert s.controls["adhesion"].layout.visible and s.result.subject.gamma > 0
+
+
+@pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
+def test_messages_box_grows_with_its_messages_up_to_a_limit():
+    # found by a review: three messages in a 62 px box, two of them out of sight
+    from asperity.explorer.app import MESSAGES_HEIGHT, MESSAGES_MAX_HEIGHT
+
+    assert session().messages.height == MESSAGES_HEIGHT
+    s = session("mode=physical&P_max_N=3000&alpha=-2&foo=1")
+    items = s.page.messages_html.count("<div class=")
+    assert items >= 3, s.page.messages_html
+    assert MESSAGES_HEIGHT < s.messages.height <= MESSAGES_MAX_HEIGHT

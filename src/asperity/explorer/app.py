@@ -58,8 +58,10 @@ GROUPS = (
     ("Summit heights", ("heights",)),
 )
 CONTROL_WIDTH = 330
-#: Heights (px) of the messages (scrolling beyond two) and of the derived numbers in each mode.
+#: Heights (px) of the messages (at least two lines, growing with them up to about five
+#: messages, then scrolling) and of the derived numbers in each mode.
 MESSAGES_HEIGHT = 62
+MESSAGES_MAX_HEIGHT = 160
 DERIVED_HEIGHT = {"dimensionless": 112, "physical": 198}
 
 
@@ -343,6 +345,10 @@ class ExplorerSession:
         text = (_html_list(errors, "error") + _html_list(warnings, "warning")
                 + _html_list(self.link_messages + kept, "note"))
         self.page.messages_html = text or '<div class="quiet">no warnings from the library for this view</div>'
+        # each message: its lines of about 145 characters (18 px) and its padding and margin (12 px)
+        need = 4 + sum(12 + 18 * max(1, -(-len(str(m)) // 145))
+                       for m in (*errors, *warnings, *self.link_messages, *kept))
+        self.messages.height = int(min(MESSAGES_MAX_HEIGHT, max(MESSAGES_HEIGHT, need)))
 
     @staticmethod
     def _derived_html(result) -> str:
