@@ -178,6 +178,19 @@ def test_invalid_value_shows_the_message_and_keeps_the_view(page, server):
     assert source_data(page, "load") == before
 
 
+def test_messages_box_grows_and_keeps_its_text(page, server):
+    # the box's height follows its messages; BokehJS renders a Div whose height changed again
+    # with its own (empty) text, so the messages must be written again after that
+    load(page, server.url + "?mode=physical&P_max_N=3000&foo=1")
+    messages = page.locator(".asp-messages")
+    messages.locator(".note").get_by_text("unknown parameter 'foo' ignored").wait_for()
+    messages.locator(".warning").get_by_text("AreaFractionWarning", exact=False).first.wait_for()
+    assert messages.bounding_box()["height"] > 62
+    type_into(page, "sigma_s_m", "-1")
+    messages.locator(".error").get_by_text("must be > 0", exact=False).first.wait_for()
+    assert "last valid parameters" in messages.locator(".note").all_inner_texts()[-1]
+
+
 def test_csv_download_is_the_librarys(page, server, tmp_path):
     load(page, server.url + "?n=30&gamma=0.002")
     with page.expect_download() as info:

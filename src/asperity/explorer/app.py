@@ -79,12 +79,19 @@ class PageState(DataModel):
 _URL_JS = "history.replaceState(history.state, '', window.location.pathname + '?' + page.query);"
 #: Writes the messages and numbers into their (fixed-size) Divs' boxes directly: a change of a
 #: Div's text would make BokehJS lay the whole page out again and repaint every plot.
+#: A Div whose height changed (the messages grow with them) is rendered again with its own
+#: (empty) text, after this runs: the write is repeated once the browser has laid it out.
 _PANELS_JS = """
-for (const [div, html] of [[messages, page.messages_html], [derived, page.derived_html]]) {
-  const view = Bokeh.index.find_one(div);
-  const box = view == null ? null : view.shadow_el.querySelector('.asp-box');
-  if (box != null && box.innerHTML !== html) box.innerHTML = html;
-}
+const write = () => {
+  for (const [div, html] of [[messages, page.messages_html], [derived, page.derived_html]]) {
+    const view = Bokeh.index.find_one(div);
+    const box = view == null ? null : view.shadow_el.querySelector('.asp-box');
+    if (box != null && box.innerHTML !== html) box.innerHTML = html;
+  }
+};
+write();
+setTimeout(write, 0);
+requestAnimationFrame(() => requestAnimationFrame(write));
 """
 _DOWNLOAD_JS = """
 const blob = new Blob([page.download_text], {type: 'text/csv'});
@@ -169,6 +176,8 @@ class ExplorerSession:
         write = CustomJS(args={"page": self.page, "messages": self.messages, "derived": self.derived}, code=_PANELS_JS)
         self.page.js_on_change("messages_html", write)
         self.page.js_on_change("derived_html", write)
+        self.messages.js_on_change("height", write)
+        self.derived.js_on_change("height", write)
         doc.js_on_event("document_ready", CustomJS(args={"page": self.page}, code=_URL_JS))
         doc.js_on_event("document_ready", write)
         self.panels = [panel for make in optional_panels() if (panel := make()) is not None]
@@ -344,11 +353,11 @@ class ExplorerSession:
             self.good == self.pending else ()
         text = (_html_list(errors, "error") + _html_list(warnings, "warning")
                 + _html_list(self.link_messages + kept, "note"))
-        self.page.messages_html = text or '<div class="quiet">no warnings from the library for this view</div>'
         # each message: its lines of about 145 characters (18 px) and its padding and margin (12 px)
         need = 4 + sum(12 + 18 * max(1, -(-len(str(m)) // 145))
                        for m in (*errors, *warnings, *self.link_messages, *kept))
         self.messages.height = int(min(MESSAGES_MAX_HEIGHT, max(MESSAGES_HEIGHT, need)))
+        self.page.messages_html = text or '<div class="quiet">no warnings from the library for this view</div>'
 
     @staticmethod
     def _derived_html(result) -> str:
