@@ -334,6 +334,29 @@ def test_nano_scaled_parameters_report_in_si_units(ci):
     assert si.parameters["mu0"].ci95 == pytest.approx(plain.parameters["mu0"].ci95, rel=1e-4)
 
 
+def test_a_value_at_a_bound_is_the_bound():
+    """A review: a parameter at its bound printed one ulp inside it (lmfit's sin() map of a
+    bounded parameter): 2.9999999999999996e-09 for 3e-09."""
+    P = np.linspace(1, 50, 15) * 1e-9
+    for hi in (3e-9, 3.3e-9, 7e-10):
+        res = fit_friction_load(friction_load_data(P, 0.3 * (P + 4e-9), physical=True), "amontons",
+                                bounds={"P0_N": (0, hi)}, start={"P0_N": hi / 2}, ci="wald")
+        assert res.values["P0_N"] == hi and res.parameters["P0_N"].note == "at its upper bound"
+
+
+@pytest.mark.parametrize("bounds, inside", [((0.0, 0.25), (0.0, 0.25)), ((0.5, None), (0.5, np.inf)),
+                                            ((0.31, 0.4), (0.31, 0.4))])
+def test_a_default_start_outside_the_bounds_is_moved_inside(bounds, inside):
+    """Bounds without a start used to be refused when the model's default start (mu0 = 0.3)
+    lay outside them; the start was ours, so it is moved inside and the fit runs."""
+    P = np.linspace(1.0, 50.0, 15)
+    res = fit_friction_load(friction_load_data(P, 0.3 * (P + 4.0)), "amontons", bounds={"mu0": bounds}, ci="wald")
+    assert inside[0] <= res.values["mu0"] <= inside[1] and res.success
+    with pytest.raises(ValueError, match="exclude its start value 0.3"):
+        fit_friction_load(friction_load_data(P, 0.3 * (P + 4.0)), "amontons", bounds={"mu0": (0.5, 1.0)},
+                          start={"mu0": 0.3})
+
+
 def test_an_expression_may_name_a_scaled_parameter_defined_after_it():
     """A review: 'mu0 = P0_N * k' raised NameError (P0_N was defined after the expression)."""
     P = np.linspace(1, 50, 15) * 1e-9

@@ -59,7 +59,8 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
     ------
     ValueError
         For a model that cannot fit its data, an unknown parameter, a parameter both fixed and
-        varied, a bound that excludes the start value, a log-scaled parameter at or below 0,
+        varied, a bound that excludes a start value given (a default start outside the bounds is
+        moved inside), a log-scaled parameter at or below 0,
         a missing value, fewer points than free parameters, or an unknown weighting or loss.
     """
     if loss not in LOSSES:
@@ -109,6 +110,10 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
         if name in bounds:
             p.lo, p.hi = _bounds(bounds[name], name)
     _fill_starts(terms, params)
+    for name, p in params.items():  # a start of ours outside the user's bounds is moved inside
+        if p.vary and p.expr is None and name not in start and p.value is not None and not p.lo <= p.value <= p.hi \
+                and name in bounds:
+            p.value = _inside(p.value, p.lo, p.hi, p.log)
     _check_values(params)
     problem = Problem(terms, params, [resolve_weights(t.data, weights) for t in terms], loss)
     n_free = len(problem.free)
@@ -141,6 +146,22 @@ def _bounds(value, name):
     if not lo < hi or math.isnan(lo) or math.isnan(hi):
         raise ValueError(f"bounds {name}: need lo < hi, got ({lo!r}, {hi!r})")
     return lo, hi
+
+
+def _inside(value, lo, hi, log):
+    """A start inside (lo, hi) for a default start ``value`` outside: the middle of finite
+    bounds, else the reflection of ``value`` in the bound it passed (as far inside as it was
+    outside); for a parameter fitted in log10, the same in log10 (a lower bound 0 is -inf)."""
+    if log:
+        if value <= 0:  # refused by _check_values with its own message
+            return value
+        z = _inside(math.log10(value), math.log10(lo) if lo > 0 else -math.inf,
+                    math.log10(hi) if math.isfinite(hi) else math.inf, False)
+        return 10.0**z
+    if math.isfinite(lo) and math.isfinite(hi):
+        return 0.5 * (lo + hi)
+    edge = lo if value < lo else hi
+    return 2.0 * edge - value
 
 
 def _fill_starts(terms, params):

@@ -100,9 +100,17 @@ class GlobalParameter:
             return 1.0
         return SCALED_UNITS.get(self.spec.unit, 1.0)
 
+    @property
+    def per_unit(self) -> float:
+        """How many of :attr:`scale` make one SI unit (1e9 for nanometres), an exact integer: a
+        value is scaled by multiplying by it and brought back by dividing by it, so that a
+        decimal value such as a bound of 3 nm comes back as 3e-09 m exactly (dividing by the
+        inexact 1e-9 and multiplying back gave 2.9999999999999997e-09)."""
+        return float(round(1.0 / self.scale))
+
     def linear(self, z: float) -> float:
         """A value in the fitted coordinate (log10, scaled or plain) in linear units."""
-        return 10.0**z if self.log else z * self.scale
+        return 10.0**z if self.log else z / self.per_unit
 
 
 class Term:
@@ -251,12 +259,12 @@ class Problem:
                     later.append((p.fitted_name, f"log10({p.expr})"))
                 later.append((p.name, f"10**{p.fitted_name}"))
             elif p.scale != 1.0:
-                k = p.scale
+                k = p.per_unit
                 if p.expr is None:
-                    params.add(p.fitted_name, value=p.value / k, min=p.lo / k, max=p.hi / k, vary=p.vary)
+                    params.add(p.fitted_name, value=p.value * k, min=p.lo * k, max=p.hi * k, vary=p.vary)
                 else:
-                    later.append((p.fitted_name, f"({p.expr}) / {k!r}"))
-                later.append((p.name, f"{p.fitted_name} * {k!r}"))
+                    later.append((p.fitted_name, f"({p.expr}) * {k!r}"))
+                later.append((p.name, f"{p.fitted_name} / {k!r}"))
             elif p.expr is None:
                 params.add(p.name, value=p.value, min=p.lo, max=p.hi, vary=p.vary)
             else:

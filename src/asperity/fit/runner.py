@@ -252,7 +252,7 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
     for v, n, xi in zip(var_names, names, x, strict=True):
         lo, hi = bounds[v]
         start = by_fitted[v]
-        scale_x = max(abs(xi), abs(math.log10(start.value) if start.log else start.value / start.scale), 1e-300)
+        scale_x = max(abs(xi), abs(math.log10(start.value) if start.log else start.value * start.per_unit), 1e-300)
         for edge, side in ((lo, "lower"), (hi, "upper")):
             if math.isfinite(edge) and abs(xi - edge) <= 1e-6 * max(scale_x, abs(edge)) and n not in undetermined:
                 at_bound[n] = (side, by_fitted[v].linear(edge))
@@ -271,7 +271,7 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
             continue
         p = by_fitted[v]
         lo, hi = wald_interval(x[i], se[i], quantile, p.log)
-        lo, hi = (lo * p.scale, hi * p.scale) if not p.log else (lo, hi)
+        lo, hi = (p.linear(lo), p.linear(hi)) if not p.log else (lo, hi)
         intervals[n] = (max(lo, p.lo), min(hi, p.hi))
         if intervals[n] != (lo, hi):
             notes[n] = "Wald interval cut at a bound"
@@ -326,6 +326,11 @@ def _exact(problem, result) -> bool:
 
 def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitResult:
     values = problem.values(result.params)
+    for name, (_, edge) in a["at_bound"].items():
+        # lmfit maps a bounded parameter through sin(): the bound itself comes back a few ulps
+        # inside (2.9999999999999996e-09 for 3e-09); a value that close is the bound
+        if abs(values[name] - edge) <= 1e-12 * abs(edge):
+            values[name] = edge
     with pywarnings.catch_warnings(record=True) as caught:
         pywarnings.simplefilter("always", AsperityWarning)
         for term in problem.terms:
@@ -345,7 +350,7 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
             i = free[name]
             bad = name in a["undetermined"] or name in a["at_bound"]
             stderr = None if bad or not np.isfinite(a["se"][i]) else float(
-                _LN10 * values[name] * a["se"][i] if p.log else a["se"][i] * p.scale)
+                _LN10 * values[name] * a["se"][i] if p.log else a["se"][i] / p.per_unit)
             estimates[name] = ParameterEstimate(name, values[name], stderr, a["intervals"].get(name, (None, None)),
                                                 True, unit, log, a["methods"].get(name, "undetermined"),
                                                 a["notes"].get(name, ""))
