@@ -41,6 +41,7 @@ def test_jumps_are_dashed_and_measured_against_the_base():
         np.testing.assert_allclose(sorted(line.get_ydata()), sorted([j.P_from, j.P_to]), rtol=1e-9)
 
 
+@pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
 def test_physical_cycle_in_nanonewtons_and_nanometres():
     contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12))
     c = contact.cycle(preload="5uN", n=100)

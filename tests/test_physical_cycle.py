@@ -12,6 +12,9 @@ from asperity.physical import PhysicalContact, Surface
 
 SURFACE = Surface(2e-9, 1e-6, 1e12, 1e-6)
 
+#: Gold asperities this rough yield; the elastic cycle warns as every curve does (tested below).
+pytestmark = pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
+
 
 @pytest.fixture(scope="module")
 def contact():
@@ -139,3 +142,32 @@ def test_dimensionless_lists_are_one_dimensional_and_counted():
     for k in (-math.inf, math.nan):
         with pytest.raises(ValueError, match=r"valid range 1e-100 <= stiffness <= inf\), got"):
             cycle(*p, d_min=0.0, stiffness=k)
+
+
+def test_an_elastic_cycle_warns_when_the_asperities_yield():
+    """A review: cycles were the only curves not checked for yield (the header promised notes)."""
+    import warnings
+
+    from asperity.plasticity import PlasticityWarning
+
+    contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12))
+    with pytest.warns(PlasticityWarning, match="past the critical interference"):
+        contact.cycle(preload="5uN", n=30)
+    with warnings.catch_warnings():  # the same contact, lightly loaded: no yield, no warning
+        warnings.simplefilter("error")
+        PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12), plastic_threshold=1.0).cycle(preload="5uN", n=30)
+
+
+def test_a_plastic_cycle_says_it_has_no_unloading_and_counts_the_yielded():
+    """A review: --law jackson-green gave a reversible loop with no word and no plastic column."""
+    from asperity import AsperityWarning
+    from asperity.elastic_plastic import plastic_fraction
+
+    contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12), plasticity="jackson-green", adhesion=False)
+    with pytest.warns(AsperityWarning, match="jackson-green law has no unloading"):
+        c = contact.cycle(preload="5uN", n=30)
+    for branch in (c.approach, c.retract):
+        assert "plastic" in branch.columns()
+        expected = plastic_fraction(branch.d / contact.surface.sigma_s, contact.u_c, contact.heights) * contact.N
+        np.testing.assert_allclose(branch.plastic, expected, rtol=1e-12)
+    assert np.max(c.approach.plastic) > 0 and c.energy_J == 0.0

@@ -16,10 +16,12 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 
 import numpy as np
 
 from ._validation import as_float_array, check_1d, scalar
+from ._warnings import AsperityWarning
 from .cycle_integrals import CycleIntegrals, chebyshev_points
 from .cycle_result import BranchCurve, CycleResult, PreloadCurve
 from .cycle_search import closest_approach, first_zero, retract_pull_off
@@ -94,7 +96,8 @@ def _path_grid(d_min: float, d_max: float, reach: float, n: int):
 # -- the cycle -----------------------------------------------------------------------------
 def _branch(ci: CycleIntegrals, name, d, sums, stiffness, jump, parameters) -> BranchCurve:
     contacts, P, F, area = (sums[:, i] for i in range(4))
-    return BranchCurve(d=d, P=P, F=F, mu=friction_coefficient(F, P), area=area,
+    plastic = ci.law.plastic_fraction(d, ci.heights) if hasattr(ci.law, "plastic_fraction") else None
+    return BranchCurve(d=d, P=P, F=F, mu=friction_coefficient(F, P), area=area, plastic=plastic,
                        pressure=mean_pressure(P, area, ci.params.nu), contacts=contacts, parameters=parameters,
                        d_base=base_displacement(d, P, stiffness), jump=jump, branch=name,
                        spring=not math.isinf(stiffness))
@@ -189,6 +192,12 @@ def compute_cycle(ci: CycleIntegrals, *, d_min=None, preload=None, d_max=None, d
         approach, retract, jumps = _measured(ci, grid, app, ret, d_min, k, parameters)
         po = _measured_pull_off(ci, retract, jumps, d_min, d_max)
     lost = sum(j.energy for j in jumps)
+    if hasattr(ci.law, "plastic_fraction") and np.any(approach.plastic > 0):
+        name = getattr(ci.law, "name", type(ci.law).__name__)
+        warnings.warn(f"the {name} law has no unloading: the retraction retraces the approach as if the "
+                      f"asperities had not yielded (up to {100 * np.max(approach.plastic):.3g} % of all the asperities "
+                      f"past the critical interference), so the loop dissipates no plastic work; the energy and "
+                      f"pull-off are those of a reversible contact", AsperityWarning, stacklevel=3)
     return CycleResult(
         approach=approach, retract=retract, pull_off=po, energy=float(-loop[1] + lost),
         loop_energy=ci.loop_energy(), loop_fraction=float(ci.loop_fraction(d_min, d_max)), jump_energy=float(lost),

@@ -372,6 +372,16 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
 
         return physical_preload_curve(self, preload, d_max=d_max, u_in=u_in)
 
+    def warn_if_yielding(self, d_local, contacts, *, stacklevel: int = 2) -> None:
+        """One :class:`~asperity.PlasticityWarning` if, at a separation ``d_local`` (:math:`d/\\sigma_s`,
+        as the asperities feel it), more than :attr:`plastic_threshold` of the ``contacts``
+        (:math:`n/N`) are past the critical interference; nothing for an elastic-plastic law (its
+        curves carry the ``plastic`` column) or without a hardness."""
+        if self.u_c is not None:
+            check_yield(plastic_share(plastic_fraction(d_local, self.u_c, self.heights), contacts),
+                        threshold=self.plastic_threshold, psi=self.plasticity_index,
+                        critical_interference=self.critical_interference, law=self.law, stacklevel=stacklevel + 1)
+
     def _physical(self, curve: CurveResult, *, d=None, P=None) -> PhysicalCurve:
         """The SI curve of a dimensionless one; one :class:`AreaFractionWarning` if its area is too large."""
         fs, area = self.force_scale, curve.area * self.area_scale
@@ -379,11 +389,8 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
         with np.errstate(divide="ignore", invalid="ignore"):
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
         plastic = curve.plastic  # the plastic law's column; the elastic law is only checked
-        if plastic is None and self.u_c is not None:
-            d_local = curve.d if curve.d_local is None else curve.d_local  # as the asperities feel it
-            check_yield(plastic_share(plastic_fraction(d_local, self.u_c, self.heights), curve.contacts),
-                        threshold=self.plastic_threshold, psi=self.plasticity_index,
-                        critical_interference=self.critical_interference, law=self.law, stacklevel=4)
+        if plastic is None:
+            self.warn_if_yielding(curve.d if curve.d_local is None else curve.d_local, curve.contacts, stacklevel=5)
         result = PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,
                                mu=curve.mu, area=area, pressure=pressure, contacts=curve.contacts * self.N,
                                dimensionless=curve, parameters=self.parameters(),

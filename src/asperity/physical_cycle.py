@@ -221,6 +221,7 @@ def _branch(contact: PhysicalContact, b) -> PhysicalBranch:
         pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
     return PhysicalBranch(d=b.d * sigma, P=P, F=b.F * fs, mu=b.mu, area=area, pressure=pressure,
                           contacts=b.contacts * contact.N, dimensionless=b, parameters=contact.parameters(),
+                          plastic=None if b.plastic is None else b.plastic * contact.N,
                           nominal_area=contact.surface.area, d_base=b.d_base * sigma, jump=b.jump, branch=b.branch,
                           spring=b.spring)
 
@@ -270,6 +271,11 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     AreaFractionWarning
         If the real contact area passes 10 % of the nominal area on either branch
         (:func:`asperity.physical.warn_area_fraction`).
+    PlasticityWarning
+        If, with the elastic law, more than the contact's ``plastic_threshold`` of the
+        asperities in contact are past the critical interference at the closest approach.
+    AsperityWarning
+        With an elastic-plastic law (no unloading: the retraction retraces the approach).
 
     Examples
     --------
@@ -307,6 +313,8 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     po = res.pull_off
     energy = fs * sigma
     approach, retract = _branch(contact, res.approach), _branch(contact, res.retract)
+    if res.approach.plastic is None:  # the elastic law: checked as every curve (the closest approach decides)
+        contact.warn_if_yielding(res.approach.d, res.approach.contacts, stacklevel=2)
     warn_area_fraction(max(approach.max_area_fraction, retract.max_area_fraction), stacklevel=2,
                        where=" during the cycle")
     jumps = tuple({"branch": j.branch, "d_base_m": j.d_base * sigma, "d_from_m": j.d_from * sigma,

@@ -12,6 +12,9 @@ from asperity.units import to_si
 
 from .helpers import AU, one_line_error, rows_of, run, strict_json
 
+#: Gold asperities this rough yield; the elastic cycle warns as every curve does (tested below).
+pytestmark = pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")
+
 ABOVE = ["--alpha", "0.02", "--beta", "50", "--gamma", "0.02"]
 P_ABOVE = (0.02, 50.0, 0.02)
 
@@ -94,6 +97,20 @@ def test_physical_json(capsys):
     assert code == 0 and got["energy"]["energy_J"] == res.energy_J and got["pull_off"]["force_N"] == res.pull_off.force
     assert "P_N" in got["rows"][0]
     assert got["contact"] == strict_json(json.dumps(au().to_dict()))
+
+
+def test_plastic_cycle_equals_the_library_and_says_it_has_no_unloading(capsys):
+    from asperity import AsperityWarning
+
+    argv = ["--material", "Au", "--sigma-s", "2nm", "--R", "100nm", "--eta", "2e14/m^2", "--area", "1um^2"]
+    code, out, err = run(capsys, "cycle", *argv, "--preload", "5uN", "--points", "12", "--law", "jackson-green",
+                         "--no-adhesion", "--format", "json")
+    got = strict_json(out)
+    contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12), plasticity="jackson-green", adhesion=False)
+    with pytest.warns(AsperityWarning, match="no unloading"):
+        res = contact.cycle(preload=5e-6, n=12)
+    assert code == 0 and "asperity: note: the jackson-green law has no unloading" in err
+    assert [r["plastic"] for r in got["rows"]] == [float(x) for b in (res.approach, res.retract) for x in b.plastic]
 
 
 def test_plot(capsys, tmp_path):

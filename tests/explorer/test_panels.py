@@ -107,8 +107,12 @@ def test_real_cycle_panel():
                         runner=immediate_runner)
     cycle_of(s).toggle.active = True
     assert s.failure is None, s.failure
-    ref = cycle(0.003, 1000.0, 0.0, preload=1e5, n=30, law=JacksonGreen(0.003, 2.0))
+    with pytest.warns(asperity.AsperityWarning, match="no unloading"):
+        ref = cycle(0.003, 1000.0, 0.0, preload=1e5, n=30, law=JacksonGreen(0.003, 2.0))
     np.testing.assert_allclose(cycle_of(s).sources["approach"].data["P"], ref.approach.P, rtol=1e-12)
+    # the cycle's warning reaches the page (it went to the server's log), once
+    assert s.page.messages_html.count("approach and retract: AsperityWarning: the jackson-green law has no "
+                                      "unloading") == 1, s.page.messages_html
 
 
 @pytest.mark.skipif(not HAS_CYCLE, reason="asperity.cycle is not installed (the panel is optional)")

@@ -20,6 +20,7 @@ every number comes from the library.
 from __future__ import annotations
 
 import html
+import warnings
 from concurrent.futures import ThreadPoolExecutor
 from functools import partial
 
@@ -320,7 +321,7 @@ class ExplorerSession:
         self.good, self.result = state, result
         self.plots.update(_compute.load_columns(result), _compute.separation_columns(result),
                           _compute.pull_off_columns(result))
-        self.panel_messages = []
+        self.panel_messages = list(result.extra_warnings)
         for panel, data in result.extras.items():
             if isinstance(data, str):
                 self.panel_messages.append(f"{panel.toggle.label.split(':')[0]}: {data}")
@@ -349,13 +350,13 @@ class ExplorerSession:
     def _show_messages(self) -> None:
         errors = list(self.errors.values()) + ([self.failure] if self.failure else [])
         kept = ["the plots and numbers show the last valid parameters"] if errors and self.result else []
-        warnings = (*self.result.warnings, *self.panel_messages) if self.result is not None and \
+        cautions = (*self.result.warnings, *self.panel_messages) if self.result is not None and \
             self.good == self.pending else ()
-        text = (_html_list(errors, "error") + _html_list(warnings, "warning")
+        text = (_html_list(errors, "error") + _html_list(cautions, "warning")
                 + _html_list(self.link_messages + kept, "note"))
         # each message: its lines of about 145 characters (18 px) and its padding and margin (12 px)
         need = 4 + sum(12 + 18 * max(1, -(-len(str(m)) // 145))
-                       for m in (*errors, *warnings, *self.link_messages, *kept))
+                       for m in (*errors, *cautions, *self.link_messages, *kept))
         self.messages.height = int(min(MESSAGES_MAX_HEIGHT, max(MESSAGES_HEIGHT, need)))
         self.page.messages_html = text or '<div class="quiet">no warnings from the library for this view</div>'
 
@@ -390,7 +391,12 @@ def attempt(state, panels=()):
         return _message(err)
     for panel in panels:
         try:
-            result.extras[panel] = panel.compute(result)
+            with warnings.catch_warnings(record=True) as caught:  # to the page, not the server's log
+                warnings.simplefilter("always")
+                result.extras[panel] = panel.compute(result)
+            label, seen = panel.toggle.label.split(":")[0], {_compute.number_free(n) for n in result.warnings}
+            result.extra_warnings.extend(f"{label}: {note}" for note in _compute.caught_notes(caught)
+                                         if _compute.number_free(note) not in seen)  # the curves' own: once
         except Exception as err:  # noqa: BLE001
             result.extras[panel] = _message(err)
     return result

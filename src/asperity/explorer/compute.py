@@ -64,6 +64,8 @@ class Result:
     derived: tuple[tuple[str, str, str], ...]
     warnings: tuple[str, ...] = ()
     extras: dict = field(default_factory=dict, compare=False)
+    #: The panels' warnings (``'label: Category: message'``), shown with the view's own.
+    extra_warnings: list = field(default_factory=list, compare=False)
 
     @property
     def physical(self) -> bool:
@@ -207,6 +209,16 @@ def _derived(state: State, subject, pull_off) -> list[tuple[str, str, str]]:
     return rows
 
 
+def number_free(note: str) -> str:
+    """A note with its numbers replaced by '#': two notes that differ only in them are one."""
+    return re.sub(r"\d[\d.e+-]*", "#", note)
+
+
+def caught_notes(caught) -> list[str]:
+    """Recorded warnings as the page shows them: ``'Category: message'`` in the page's words."""
+    return [f"{w.category.__name__}: {page_wording(str(w.message))}" for w in caught]
+
+
 def compute(state: State) -> Result:
     """The curves, pull-off, derived numbers and warnings of a view, from the library.
 
@@ -225,9 +237,9 @@ def compute(state: State) -> Result:
             load, separation = subject.load_curve(P), subject.separation_curve(d_bar * subject.surface.sigma_s)
         pull_off = subject.pull_off()
         derived = _derived(state, subject, pull_off)
-    notes = [f"{w.category.__name__}: {page_wording(str(w.message))}" for w in caught]
+    notes = caught_notes(caught)
     # one of each: the two curves' notes differ only in their numbers (a share, a load), the first kept
-    unique = {re.sub(r"\d[\d.e+-]*", "#", n): n for n in reversed(notes)}
+    unique = {number_free(n): n for n in reversed(notes)}
     return Result(state, subject, load, separation, pull_off, tuple(derived), tuple(reversed(unique.values())))
 
 
