@@ -3,10 +3,10 @@
 Runs the same code on a laptop (a local Dask cluster, one worker per core, when
 ``asperity[sweep]`` is installed) and on a cluster (``--scheduler tcp://HOST:8786``):
 
-    python examples/sweep_map.py --out maps/            # 12 x 12 sets, 50 loads each
-    asperity plot maps/map.nc --x alpha --y gamma --z mu --at P=10
+    python examples/sweep_map.py                        # 12 x 12 sets, 50 loads each
+    asperity plot sweep-map/map.nc --x alpha --y gamma --z mu --at P=10
 
-It writes ``map.nc`` (NetCDF; the dimensions alpha, gamma and P, units in the
+It writes ``sweep-map/map.nc`` (NetCDF; the dimensions alpha, gamma and P, units in the
 attributes), a heat map of the pull-off force, and prints where adhesion turns the
 contact sticky (a pull-off above the load scale of one asperity).
 """
@@ -24,7 +24,7 @@ from asperity.cli.plot import heat_map
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", default=".", help="output directory (default: here)")
+    parser.add_argument("--out", default="sweep-map", help="output directory (default: sweep-map)")
     parser.add_argument("--scheduler", default=None, help="'serial', 'local' or a Dask scheduler address")
     parser.add_argument("--n", type=int, default=12, help="grid points per parameter (default 12)")
     args = parser.parse_args(argv)
@@ -39,8 +39,8 @@ def main(argv=None):
           f"{int((ds.message != '').sum())} outside the model's domain")
     for g in ds.gamma.values[::3]:
         row = sticky.sel(gamma=g).values
-        edge = ds.alpha.values[row].max() if row.any() else float("nan")
-        print(f"gamma = {g:.3g}: pull-off above 1 (N G b^2) for alpha <= {edge:.3g}")
+        where = f"for alpha <= {ds.alpha.values[row].max():.3g}" if row.any() else "for no alpha of the grid"
+        print(f"gamma = {g:.3g}: pull-off above 1 (N G b^2) {where}")
     return ds
 
 
