@@ -61,7 +61,7 @@ from ._validation import (
 )
 from ._warnings import AsperityWarning
 from .curves import CurveResult, Model
-from .elastic_plastic import LAWS, plastic_fraction
+from .elastic_plastic import LAWS
 from .friction_stress import ConstantShear, FrictionLaw
 from .groups import work_of_adhesion_from_gamma
 from .heights import GAUSSIAN, HeightDistribution, check_heights
@@ -79,10 +79,10 @@ from .physical_results import (
     PhysicalPullOff,
     warn_area_fraction,
 )
-from .plasticity import PLASTIC_THRESHOLD, ContactPlasticity, check_yield, plastic_share, resolve_plasticity
+from .plasticity import PLASTIC_THRESHOLD, ContactPlasticity, resolve_plasticity
 from .regimes import adhesion_regime, fuller_tabor_parameter, maugis_parameter, tabor_parameter
 from .surface import Surface, surface_from_groups
-from .units import to_si
+from .units import is_quantity, to_si
 
 __all__ = [
     "Surface",
@@ -338,12 +338,23 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
     def pull_off(self, d_max: float | None = None) -> PhysicalPullOff:
         """Pull-off force (N) and its separation (m), with the real contact area there.
 
-        ``d_max`` bounds the search in units of sigma_s (default: see :meth:`asperity.Model.pull_off`).
-        Issues an :class:`AreaFractionWarning` if the area at pull-off passes 10 % of the nominal area.
+        ``d_max`` bounds the search: a number in units of sigma_s, or a length with its unit
+        (``'20nm'``, a pint quantity; command line: ``--d-max 20nm``); default: see
+        :meth:`asperity.Model.pull_off`.  Issues an :class:`AreaFractionWarning` if the area at
+        pull-off passes 10 % of the nominal area.
         """
+        given = d_max
+        if isinstance(d_max, str) or is_quantity(d_max):  # a length: in units of sigma_s below
+            d_max = check_scalar_positive(to_si(d_max, "m", "d_max"), "d_max", "m") / self.surface.sigma_s
         if d_max is not None:
             d_max = check_scalar_positive(d_max, "d_max")
-        po = self.model.pull_off(d_max)
+        try:
+            po = self.model.pull_off(d_max)
+        except ValueError as err:
+            if given is d_max:
+                raise
+            raise ValueError(f"{err} (d_max = {given} is {d_max:.6g} sigma_s, sigma_s = {self.surface.sigma_s:g} m)") \
+                from None
         area = 0.0
         if po.exists:
             at = self.model.separation_curve([po.d])
@@ -372,16 +383,6 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
 
         return physical_preload_curve(self, preload, d_max=d_max, u_in=u_in)
 
-    def warn_if_yielding(self, d_local, contacts, *, stacklevel: int = 2) -> None:
-        """One :class:`~asperity.PlasticityWarning` if, at a separation ``d_local`` (:math:`d/\\sigma_s`,
-        as the asperities feel it), more than :attr:`plastic_threshold` of the ``contacts``
-        (:math:`n/N`) are past the critical interference; nothing for an elastic-plastic law (its
-        curves carry the ``plastic`` column) or without a hardness."""
-        if self.u_c is not None:
-            check_yield(plastic_share(plastic_fraction(d_local, self.u_c, self.heights), contacts),
-                        threshold=self.plastic_threshold, psi=self.plasticity_index,
-                        critical_interference=self.critical_interference, law=self.law, stacklevel=stacklevel + 1)
-
     def _physical(self, curve: CurveResult, *, d=None, P=None) -> PhysicalCurve:
         """The SI curve of a dimensionless one; one :class:`AreaFractionWarning` if its area is too large."""
         fs, area = self.force_scale, curve.area * self.area_scale
@@ -390,7 +391,7 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
             pressure = np.where(area > 0, P / np.where(area > 0, area, 1.0), np.nan)
         plastic = curve.plastic  # the plastic law's column; the elastic law is only checked
         if plastic is None:
-            self.warn_if_yielding(curve.d if curve.d_local is None else curve.d_local, curve.contacts, stacklevel=5)
+            self.warn_if_yielding(curve.d if curve.d_local is None else curve.d_local, curve.contacts, stacklevel=4)
         result = PhysicalCurve(d=curve.d * self.surface.sigma_s if d is None else d, P=P, F=curve.F * fs,
                                mu=curve.mu, area=area, pressure=pressure, contacts=curve.contacts * self.N,
                                dimensionless=curve, parameters=self.parameters(),

@@ -314,7 +314,7 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     energy = fs * sigma
     approach, retract = _branch(contact, res.approach), _branch(contact, res.retract)
     if res.approach.plastic is None:  # the elastic law: checked as every curve (the closest approach decides)
-        contact.warn_if_yielding(res.approach.d, res.approach.contacts, stacklevel=2)
+        contact.warn_if_yielding(res.approach.d, res.approach.contacts, stacklevel=3)
     warn_area_fraction(max(approach.max_area_fraction, retract.max_area_fraction), stacklevel=2,
                        where=" during the cycle")
     jumps = tuple({"branch": j.branch, "d_base_m": j.d_base * sigma, "d_from_m": j.d_from * sigma,

@@ -48,7 +48,7 @@ from ._validation import (
     check_scalar_positive,
 )
 from ._warnings import AsperityWarning
-from .elastic_plastic import LAWS, critical_penetration
+from .elastic_plastic import LAWS, critical_penetration, plastic_fraction
 from .materials import Material
 
 __all__ = ["PlasticityWarning", "PLASTIC_THRESHOLD", "plasticity_index", "plastic_share", "resolve_plasticity",
@@ -227,7 +227,7 @@ class ContactPlasticity:
     """Plasticity of a contact, for :class:`~asperity.physical.PhysicalContact` (a mixin).
 
     Uses the contact's ``hardness`` (Pa or None), ``h_star`` (m), ``material``, ``E_star``,
-    ``nu``, ``alpha`` and ``surface``.
+    ``nu``, ``alpha``, ``surface``, ``heights``, ``law`` and ``plastic_threshold``.
     """
 
     @property
@@ -262,3 +262,12 @@ class ContactPlasticity:
         (or for nu < 0, outside Jackson-Green's C(nu))."""
         return None if self.u_c is None else self.u_c * self.surface.sigma_s
 
+    def warn_if_yielding(self, d_local, contacts, *, stacklevel: int = 2) -> None:
+        """One :class:`~asperity.PlasticityWarning` if, at a separation ``d_local`` (:math:`d/\\sigma_s`,
+        as the asperities feel it), more than :attr:`plastic_threshold` of the ``contacts``
+        (:math:`n/N`) are past the critical interference; nothing for an elastic-plastic law (its
+        curves carry the ``plastic`` column) or without a hardness."""
+        if self.u_c is not None:
+            check_yield(plastic_share(plastic_fraction(d_local, self.u_c, self.heights), contacts),
+                        threshold=self.plastic_threshold, psi=self.plasticity_index,
+                        critical_interference=self.critical_interference, law=self.law, stacklevel=stacklevel + 1)

@@ -34,8 +34,8 @@ def test_area_above_the_nominal_area_is_noted_from_its_first_load():
     t = _table([1.0, 2.0, 3.0], area_bgt_m2=[0.5, 1.5, 2.5], area_icha_m2=[0.1, 0.2, 0.3],
                area_spectral_m2=[5.0, 5.0, 5.0])
     notes = comparison_notes(t, ("spectral", "icha", "bgt"), 1.0)
-    assert notes == ["the real area of BGT exceeds the nominal area from P = 2 N (2.5 times it) (a light-load "
-                     "asymptote, linear in the load): not physical there"]
+    assert notes == ["the real area of BGT exceeds the nominal area from P = 2 N (up to 2.5 times it, at P = 3 N) "
+                     "(a light-load asymptote, linear in the load): not physical there"]
 
 
 def test_negative_mean_gaps_are_noted_for_every_model_that_has_one():

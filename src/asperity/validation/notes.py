@@ -68,7 +68,8 @@ def comparison_notes(table, methods, nominal_area, *, elongated=None, rms_slope=
         if over.any():
             why = " (a light-load asymptote, linear in the load)" if method == "bgt" else ""
             notes.append(f"the real area of {_LABELS[method]} exceeds the nominal area from {_first(P, over)} "
-                         f"({float(np.max(fraction)):.3g} times it){why}: not physical there")
+                         f"(up to {float(np.max(fraction)):.3g} times it, at P = {P[np.argmax(fraction)]:.4g} N){why}: "
+                         "not physical there")
     for method in methods:
         gap = table.get(f"gap_{method}_m")
         if gap is None:
