@@ -347,8 +347,9 @@ SKIP = {
     # The explorer's page: Bokeh objects driven by the page's State (tests/explorer, in a browser).
     **{name: "a part of the explorer's Bokeh page, driven by a validated State (tests/explorer)"
        for name in ("asperity.explorer.app.ExplorerSession", "asperity.explorer.app.PageState",
-                    "asperity.explorer.app.immediate_runner", "asperity.explorer.app.threaded_runner",
-                    "asperity.explorer.app.make_document", "asperity.explorer.app.attempt",
+                    "asperity.explorer.runner.immediate_runner", "asperity.explorer.runner.threaded_runner",
+                    "asperity.explorer.app.make_document", "asperity.explorer.runner.attempt",
+                    "asperity.explorer.runner.page_message",
                     "asperity.explorer.controls.NumberControl", "asperity.explorer.controls.ChoiceControl",
                     "asperity.explorer.controls.FlagControl", "asperity.explorer.controls.make_control",
                     "asperity.explorer.panels.optional_panels", "asperity.explorer.panels.cycle_panel",

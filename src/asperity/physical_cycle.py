@@ -280,7 +280,7 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     Examples
     --------
     >>> from asperity.physical import PhysicalContact, Surface
-    >>> contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12))
+    >>> contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12), plastic_threshold=1.0)  # (they yield)
     >>> c = physical_cycle(contact, preload="5uN", n=50)
     >>> c.pull_off.exists, bool(c.energy_J > 0), round(c.energy_J_m2 / c.energy_J * 1e-12, 12)
     (True, True, 1.0)
@@ -360,7 +360,7 @@ def physical_preload_curve(contact: PhysicalContact, preload, *, d_max=None, u_i
     Examples
     --------
     >>> from asperity.physical import PhysicalContact, Surface
-    >>> contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12))
+    >>> contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12), plastic_threshold=1.0)  # (they yield)
     >>> pc = physical_preload_curve(contact, [1e-9, 1e-6, 1e-4])
     >>> bool(pc.pull_off_N[0] <= pc.pull_off_N[1] <= pc.pull_off_N[2])
     True

@@ -20,8 +20,6 @@ every number comes from the library.
 from __future__ import annotations
 
 import html
-import warnings
-from concurrent.futures import ThreadPoolExecutor
 from functools import partial
 
 from bokeh.core.properties import Int, String
@@ -33,6 +31,7 @@ from . import compute as _compute
 from .controls import make_control
 from .panels import optional_panels
 from .plots import SIZE, Plots
+from .runner import attempt, immediate_runner, threaded_runner
 from .state import (
     CUSTOM,
     MATERIAL_KEYS,
@@ -43,7 +42,6 @@ from .state import (
     state_from_query,
     used,
 )
-from .wording import page_wording
 
 __all__ = ["ExplorerSession", "PageState", "make_document", "attempt", "immediate_runner", "threaded_runner",
            "GROUPS"]
@@ -374,56 +372,6 @@ class ExplorerSession:
         self.page.download_name = f"asperity-{which}-curve.csv"
         self.page.download_text = curve.to_csv()
         self.page.download_count += 1
-
-
-def _message(err: Exception) -> str:
-    if isinstance(err, ValueError | TypeError | ArithmeticError):
-        return page_wording(str(err)) or type(err).__name__
-    return f"unexpected error ({type(err).__name__}: {err}); please report it with the page's address"
-
-
-def attempt(state, panels=()):
-    """:func:`asperity.explorer.compute.compute` of ``state`` and the ``compute`` of each panel, or the
-    library's message if it rejects the view.  A panel's own error becomes its entry in ``extras``."""
-    try:
-        result = _compute.compute(state)
-    except Exception as err:  # noqa: BLE001 - a bug is shown too, rather than leave the page waiting
-        return _message(err)
-    for panel in panels:
-        try:
-            with warnings.catch_warnings(record=True) as caught:  # to the page, not the server's log
-                warnings.simplefilter("always")
-                result.extras[panel] = panel.compute(result)
-            label, seen = panel.toggle.label.split(":")[0], {_compute.number_free(n) for n in result.warnings}
-            result.extra_warnings.extend(f"{label}: {note}" for note in _compute.caught_notes(caught)
-                                         if _compute.number_free(note) not in seen)  # the curves' own: once
-        except Exception as err:  # noqa: BLE001
-            result.extras[panel] = _message(err)
-    return result
-
-
-def immediate_runner(work, done) -> None:
-    """Compute at once, in this thread (for tests and scripts)."""
-    done(work())
-
-
-_EXECUTOR: list = []
-
-
-def threaded_runner(doc):
-    """Compute in the explorer's worker thread (one for all pages, so computations never overlap);
-    the result comes back to the document's thread through ``doc.add_next_tick_callback``."""
-    def run(work, done):
-        if not _EXECUTOR:
-            _EXECUTOR.append(ThreadPoolExecutor(max_workers=1, thread_name_prefix="asperity-explore"))
-        def back(future):
-            try:
-                doc.add_next_tick_callback(partial(done, future.result()))
-            except Exception:  # noqa: BLE001 - the page was closed meanwhile: nothing to show
-                pass
-
-        _EXECUTOR[0].submit(work).add_done_callback(back)
-    return run
 
 
 def make_document(doc) -> ExplorerSession:
