@@ -41,7 +41,8 @@ import numpy as np
 from .state import CUSTOM, ELASTIC, MODES, State, distributions
 from .wording import page_wording
 
-__all__ = ["Result", "compute", "height_distribution", "friction_law", "asperity_law", "model_gamma", "loads",
+__all__ = ["Result", "compute", "caught_notes", "number_free",
+           "height_distribution", "friction_law", "asperity_law", "model_gamma", "loads",
            "separations", "build_subject", "load_columns", "separation_columns", "pull_off_columns"]
 
 
