@@ -179,15 +179,31 @@ class LoopBand:
         """Number of panels."""
         return self.edges.size - 1
 
-    def _partial(self, u_c, edge=False):
+    def _partial(self, u_c, edge=False, anchored=None):
         """Nodes and weighted integrands on [u_c, next edge] for each u_c: (m, 16), (m, 16, 4); with
-        ``edge``, also the integrands at u_c itself, (m, 4) (one call of the law for both)."""
+        ``edge``, also the integrands at u_c itself, (m, 4) (one call of the law for both).
+        Where ``anchored`` (m booleans) is True, u_c is a support edge of the heights' density,
+        which starts there like (u - u_c)^p (p: :attr:`~asperity.heights.HeightDistribution.edge_power`);
+        the panel is integrated in s, u = u_c + (right - u_c) s^k with k = 4/(p + 1), which makes
+        the integrand start like s^3."""
         x, w = gauss_legendre(NODES_PER_PANEL)
         j = np.clip(np.searchsorted(self.edges, u_c, side="right") - 1, 0, self.panels - 1)
+        anchored = np.zeros(u_c.size, dtype=bool) if anchored is None else anchored
+        # an edge just below a panel's end would leave the next (fixed) panel next to the density's
+        # power-law start: that panel joins the substituted one
+        near = anchored & (j + 2 <= self.panels)
+        near[near] = (self.edges[j[near] + 1] - u_c[near]) < 0.5 * (self.edges[j[near] + 2] - self.edges[j[near] + 1])
+        j = j + near
         right = self.edges[j + 1]
         nodes = u_c[:, None] + (right - u_c)[:, None] * x[None, :]
         weights = (right - u_c)[:, None] * w[None, :]
-        first = j == 0  # in s, u = u_end + s^4: analytic at the branch end
+        first = (j == 0) & ~anchored  # in s, u = u_end + s^4: analytic at the branch end
+        if np.any(anchored):
+            p = float(self.heights.edge_power)
+            k = 4.0 / (p + 1.0) if math.isfinite(p) else 1.0  # flatter than any power: no substitution
+            width = (right - u_c)[anchored, None]
+            nodes[anchored] = u_c[anchored, None] + width * x[None, :] ** k
+            weights[anchored] = k * x[None, :] ** (k - 1.0) * width * w[None, :]
         if np.any(first):
             s_a = np.maximum(u_c[first] - self.u_end, 0.0) ** 0.25
             s_b = (right[first] - self.u_end) ** 0.25
@@ -199,19 +215,32 @@ class LoopBand:
         return (j, nodes, wq, q[nodes.size:]) if edge else (j, nodes, wq)
 
     def sums(self, d, u_c, order: int = 0, edge: bool = False):
-        r"""``[B_0, .., B_order]``: :math:`B_j = \int_{u_c}^{u_{in}} q\,\phi^{(j)}(d + u)\,du`, shape (n, 4).
+        r"""``[B_0, .., B_order]``: :math:`B_0 = \int_{u_c}^{u_{in}} q\,\phi(d + u)\,du` and its
+        derivative in :math:`d` at fixed :math:`u_c`, shape (n, 4); ``order`` 0 or 1.
 
-        ``d`` and ``u_c`` are 1-D of equal length, ``u_c`` in ``[u_end, u_in]``.  With ``edge``,
-        the integrands :math:`q(u_c)` (shape (n, 4)) are appended to the list.
+        ``d`` and ``u_c`` are 1-D of equal length, ``u_c`` in ``[u_end, u_in]``.  Where the
+        heights' support starts above :math:`d + u_c` (a lowest summit: exponential, Weibull,
+        Pearson III heights) the integral starts at the edge :math:`u_e = z_{lo} - d`, and
+        :math:`B_1` gains :math:`q(u_e)\phi(z_{lo}^+)` (that lower limit moves with :math:`d`).
+        With ``edge``, the integrands at the lower limits (shape (n, 4)) are appended to the list.
         """
+        if order not in (0, 1):
+            raise ValueError(f"order must be 0 or 1, got {order!r}")
         d = np.asarray(d, dtype=float).ravel()
         u_c = np.asarray(u_c, dtype=float).ravel()
         out = [np.zeros((d.size, 4)) for _ in range(order + 1)]
         if self.width <= 0.0 or d.size == 0:
             return out + ([np.zeros((d.size, 4))] if edge else [])
         h = self.heights
-        uniq, inv = np.unique(u_c, return_inverse=True)
-        j, nodes, wq, q_c = self._partial(uniq, edge=True)
+        # Below the support's lower edge the density is 0: the integral starts at the edge
+        # (found by a review: Gauss-Legendre across the exponential's jump erred by 5 %).
+        z_lo = float(h.support[0])
+        at_edge = (z_lo - d > u_c) if math.isfinite(z_lo) else np.zeros(d.size, dtype=bool)
+        u_lo = np.where(at_edge, np.minimum(z_lo - d, self.u_in), u_c)
+        uniq, inv = np.unique(u_lo, return_inverse=True)
+        anchored = np.zeros(uniq.size, dtype=bool)
+        anchored[inv[at_edge]] = True
+        j, nodes, wq, q_c = self._partial(uniq, edge=True, anchored=anchored)
         if uniq.size * 8 < d.size:  # few distinct cuts (a shared grid): one product per cut
             for c in range(uniq.size):
                 rows = np.flatnonzero(inv == c)
@@ -239,7 +268,32 @@ class LoopBand:
                 parts = h.weighted_sums(d[rows], self.u[a:b], self.weights[a:b], order)
                 for k in range(order + 1):
                     out[k][rows] += parts[k]
+        moving = at_edge & (z_lo - d < self.u_in)
+        if order == 1 and np.any(moving):
+            p = float(h.edge_power)
+            if 0.0 < p < 1.0:  # phi' ~ (z - z_lo)^(p - 1): integrated by parts on the edge's panel
+                rows = np.flatnonzero(moving)
+                c = inv[rows]
+                x = d[rows, None] + nodes[c]
+                out[1][rows] += self._by_parts(j[c], nodes[c], wq[c], x) - np.einsum(
+                    "nj,njc->nc", h.pdf_derivative(x, 1), wq[c])
+            else:  # the density's jump at the edge (0 for p >= 1)
+                out[1][moving] += q_c[inv[moving]] * float(h.pdf(np.array([z_lo]))[0])
         return out + ([q_c[inv]] if edge else [])
+
+    def _by_parts(self, j, nodes, wq, x):
+        r""":math:`\int_{u_e}^{R} q\,\phi'(d + u)\,du + q(u_e)\phi(z_{lo}^+)
+        = q(R)\phi(d + R) - \int_{u_e}^{R} q_u\,\phi(d + u)\,du` on the edge's panel (nodes,
+        weighted integrands ``wq`` and ``x = d + u`` per row), :math:`q_u` by central differences."""
+        h = self.heights
+        right = self.edges[j + 1]
+        step = 1e-6 * np.maximum(1.0, np.abs(nodes))
+        q_u = (law_columns(self.law, (nodes + step).ravel()) - law_columns(self.law, (nodes - step).ravel())) \
+            / (2.0 * step.ravel())[:, None]
+        weights = wq[:, :, 0]  # the quadrature weights: the contacts column is 1 above u_end
+        integral = np.einsum("nj,njc->nc", h.pdf(x) * weights, q_u.reshape(*nodes.shape, 4))
+        end = law_columns(self.law, right) * h.pdf(x[:, 0] - nodes[:, 0] + right)[:, None]
+        return end - integral
 
     def loop(self, d_min, d_max: float):
         r"""Loop integrals :math:`L(\bar d_{min}, \bar d_{max})` (module docstring), shape (n, 4).
