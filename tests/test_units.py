@@ -1,5 +1,6 @@
 """asperity.units: pint quantities and unit strings to SI floats."""
 
+import re
 import numpy as np
 import pint
 import pytest
@@ -94,3 +95,26 @@ def test_expressions_and_wrong_dimensions_keep_the_whole_texts_meaning():
     assert parse_quantity("3 m + 2 m", "m", "x") == 5.0  # not 3 * (m + 2 m)
     with pytest.raises(ValueError, match="got 3 joule"):
         parse_quantity("3J", "m", "x")
+
+
+@pytest.mark.parametrize("text, unit, needle", [
+    ("0,5J/m^2", "J/m^2", "did you mean '0.5J/m^2'?"),   # pint read 0 (adhesion silently off)
+    ("1,5nm", "m", "did you mean '1.5nm'?"),              # pint read 15 nm
+    ("2,0nm", "m", "',' and ';' are not part of a quantity"),
+    ("1;2 nN", "N", "',' and ';' are not part of a quantity"),
+    ("1 nN, 2", "N", "',' and ';'"),
+    ("1 nN 2", "N", "numbers set side by side are not read"),  # pint read 2 nN
+    ("2 1 nN", "N", "numbers set side by side"),
+    ("2 m 3", "m", "numbers set side by side"),
+])
+def test_a_quantity_pint_would_misread_is_refused(text, unit, needle):
+    """Found by a review: pint multiplies juxtaposed terms and reads ',' as nothing."""
+    with pytest.raises(ValueError, match=re.escape(needle)):
+        parse_quantity(text, unit, "x")
+
+
+@pytest.mark.parametrize("text, unit, value", [("5 1/um^2", "1/m^2", 5e12), ("3 m + 2 m", "m", 5.0),
+                                                ("1e+12 1/m^2", "1/m^2", 1e12), ("0.5 J / m ** 2", "J/m^2", 0.5),
+                                                ("2 * 3 m", "m", 6.0)])
+def test_explicit_expressions_are_still_read(text, unit, value):
+    assert parse_quantity(text, unit, "x") == pytest.approx(value, rel=1e-15)

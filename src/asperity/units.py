@@ -167,6 +167,7 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
             raise ValueError(f"{name} needs a unit compatible with {unit} (e.g. '{example} {unit}'), "
                              f"got the bare number {text!r}")
         return number
+    _check_one_number(stripped, text, name)
     try:
         registry = unit_registry()
     except ImportError:
@@ -186,6 +187,24 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
         return parse_quantity(repr(float(quantity)), unit, name, require_unit=require_unit)
     value = _convert(quantity, unit, name)
     return float(value)
+
+
+#: Two terms side by side with only spaces between, the second a number (pint would multiply
+#: them: '1 nN 2' is 2 nN, '2 1 nN' too); '5 1/um^2' (five per square micrometre) is the exception.
+_JUXTAPOSED = re.compile(r"[A-Za-z\u00b5\u03bc\u00c5\u212b\d.]\s+(?!1\s*/)(?:\d|\.\d)")
+
+
+def _check_one_number(stripped: str, text: str, name: str) -> None:
+    """Refuse what pint would read as something else: a decimal comma ('0,5J/m^2' is 5 J/m^2
+    to pint, '1,5nm' 15 nm), ';', and numbers set side by side ('1 nN 2' is 2 nN)."""
+    if "," in stripped or ";" in stripped:
+        mean = (f"; did you mean {stripped.replace(',', '.', 1)!r}?" if re.match(r"^[+-]?\d+,\d+[^,;]*$", stripped)
+                else "")
+        raise ValueError(f"{name} = {text!r}: one number with its unit, '.' the decimal point; ',' and ';' are "
+                         f"not part of a quantity{mean}")
+    if _JUXTAPOSED.search(stripped):
+        raise ValueError(f"{name} = {text!r}: one number with its unit (e.g. '2nm'), or an expression with "
+                         "explicit operators ('3 m + 2 m'); numbers set side by side are not read")
 
 
 #: A number followed by a unit that starts with a letter, '/' or '1/' ('1/um^2', '5 1/um^2'; '*', '^' go to pint).
