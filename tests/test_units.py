@@ -1,6 +1,7 @@
 """asperity.units: pint quantities and unit strings to SI floats."""
 
 import re
+
 import numpy as np
 import pint
 import pytest
