@@ -134,3 +134,24 @@ def test_failure_mid_write_leaves_no_partial_file(capsys, tmp_path, monkeypatch,
         assert one_line_error(code, err, "cannot write output file") and "No space left" in err
     assert target.read_text() == "previous result\n"
     assert [p.name for p in tmp_path.iterdir()] == ["out.csv"]
+
+
+def test_outputs_may_not_name_each_other_or_an_input(capsys, tmp_path):
+    """A review: --summits replaced the scan it read, and -o and --plot (or --summits) naming one
+    file kept only the last written, all with status 0."""
+    pytest.importorskip("SurfaceTopography")
+    scan = tmp_path / "scan.npy"
+    np.save(scan, np.random.default_rng(0).normal(size=(32, 32)))
+    before = scan.read_bytes()
+    surface = ["surface", str(scan), "--size", "1um,1um", "--unit", "nm", "--format", "json"]
+    table = tmp_path / "t.txt"
+    for argv, needle in [
+        ([*surface, "--summits", str(scan)], "is the input file"),
+        ([*surface, "--summits", str(table), "-o", str(table)], "-o and --summits name the same file"),
+        ([*surface, "--summits", str(tmp_path / "." / "t.txt"), "-o", str(table)], "name the same file"),
+        (["load", *MODEL, "--P", "1,10", "-o", str(tmp_path / "x.png"), "--plot", str(tmp_path / "x.png")],
+         "-o and --plot name the same file"),
+    ]:
+        code, out, err = run(capsys, *argv)
+        assert code == 2 and out == "" and err.count("\n") == 1 and needle in err, (argv, err)
+    assert scan.read_bytes() == before and not table.exists() and not (tmp_path / "x.png").exists()

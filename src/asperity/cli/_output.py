@@ -30,7 +30,8 @@ from .._json import dumps
 from .._validation_files import IMAGE_FORMATS
 from ._args import UsageError
 
-__all__ = ["output_format", "format_rows", "format_json", "format_physical", "comment_header", "curve_rows",
+__all__ = ["output_format", "check_targets", "output_targets",
+           "format_rows", "format_json", "format_physical", "comment_header", "curve_rows",
            "write_outputs", "image_format"]
 
 
@@ -108,6 +109,27 @@ def _target(path: str, what: str):
         raise UsageError(f"cannot write {what} {path!r}: {exc.strerror or exc}") from None
 
 
+def output_targets(args) -> tuple[tuple[str, str | None], ...]:
+    """The files a command writes: (option, path) for ``-o`` (not '-'), ``--plot`` and ``--summits``."""
+    output = getattr(args, "output", None)
+    return (("-o", None if output == "-" else output), ("--plot", getattr(args, "plot", None)),
+            ("--summits", getattr(args, "summits", None)))
+
+
+def check_targets(args, targets) -> None:
+    """Refuse an output path that names one of the command's input files, or another output
+    (either would be replaced: found by a review, ``--summits`` could overwrite the scan read)."""
+    named = [(option, path) for option, path in targets if path and path != "-"]
+    seen = {}
+    for option, path in named:
+        key = os.path.realpath(path)
+        if key in seen:
+            raise UsageError(f"{seen[key]} and {option} name the same file {path!r}: one would replace the "
+                             "other; give two names")
+        seen[key] = option
+    _not_an_input(args, named)
+
+
 def _not_an_input(args, targets) -> None:
     """Refuse an output path that names one of the command's input files (it would be replaced)."""
     inputs = []
@@ -144,7 +166,7 @@ def write_outputs(text: str, args, plot=None) -> None:
     """
     plot_path = getattr(args, "plot", None)
     output = None if args.output == "-" else args.output  # '-': standard output, as usual
-    _not_an_input(args, (("-o", output), ("--plot", plot_path)))
+    check_targets(args, output_targets(args))
     if plot is not None and plot_path == "-":
         raise UsageError("--plot -: an image cannot go to standard output; give a file name")
     if plot is not None and plot_path and image_format(plot_path) not in IMAGE_FORMATS:

@@ -32,7 +32,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args) -> None:
     from .._optional import require
     from ._args import UsageError, quantity, read_kwargs_from_args
-    from ._output import format_json, output_format, write_outputs
+    from ._output import check_targets, format_json, output_format, output_targets, write_outputs
 
     require("SurfaceTopography", purpose="surface", extra="topography")
     from ..topography import analyse_surface
@@ -46,6 +46,7 @@ def run(args) -> None:
         from ..materials import material
 
         mat = material(args.material)
+    check_targets(args, output_targets(args))  # before anything is written
     result = analyse_surface(args.file, material=mat, b=b, **kwargs)
     if args.summits:
         result.write_summits(args.summits)
