@@ -363,3 +363,28 @@ def test_an_expression_may_name_a_scaled_parameter_defined_after_it():
     res = fit_friction_load(friction_load_data(P, 0.3 * (P + 4e-9), physical=True), "amontons",
                             expr={"mu0": "P0_N*7.5e7"}, ci="wald")
     assert res.values["P0_N"] == pytest.approx(4e-9, rel=1e-9) and res.values["mu0"] == pytest.approx(0.3, rel=1e-9)
+
+
+def test_null_directions_of_a_tall_jacobian_need_no_square_matrix():
+    """A review: the SVD asked for the (points x points) matrix, 7 TiB for a million rows (a
+    MemoryError traceback); 300000 rows would need 720 GB that way."""
+    from asperity.fit.uncertainty import null_directions
+
+    x = np.linspace(1.0, 2.0, 300_000)
+    jac = np.c_[x, 2.0 * x, np.ones_like(x)]  # the first two columns are dependent
+    (names, weights), = null_directions(jac, ["a", "b", "c"])
+    assert names == ["a", "b"] and abs(weights[0] / weights[1]) == pytest.approx(2.0, rel=1e-9)
+
+
+@pytest.mark.parametrize("rows", ["0,0\n0,0\n0,0\n0,0\n", "1,0\n2,0\n3,0\n4,0\n"])
+def test_all_zero_friction_is_refused_before_any_start(tmp_path, rows):
+    """A review: Amontons' start divided by a zero slope (ZeroDivisionError; a RuntimeWarning and
+    a misleading message about mu0 with nonzero loads)."""
+    import warnings
+
+    path = tmp_path / "zeros.csv"
+    path.write_text("load [nN],friction [nN]\n" + rows)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(ValueError, match="every F_N is 0: there is nothing to fit"):
+            fit_friction_load(str(path), "amontons")

@@ -71,6 +71,8 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
     shared = set() if shared is None else set(parameter_names(shared, "shared"))
     for i, (data, model) in enumerate(zip(datasets, models, strict=True)):
         model.check(data)
+        if np.all(data.y == 0):  # before the starts, which divide by the data (found by a review)
+            raise ValueError(f"{data.name}: every {data.y_name} is 0: there is nothing to fit")
         names = {}
         for local, spec in model.specs(data).items():
             if local in data.conditions:  # given per row by the data

@@ -261,7 +261,7 @@ class AmontonsFit(FitModel):
         if v.get("mu0") is None:
             v["mu0"] = slope
         if v.get(P0_name) is None:
-            v[P0_name] = max(intercept / slope, -float(np.min(data.x)))
+            v[P0_name] = max(intercept / slope, -float(np.min(data.x))) if slope > 0 else 0.0
         return v
 
     def friction(self, P, v):

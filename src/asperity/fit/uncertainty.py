@@ -143,7 +143,9 @@ def null_directions(jac, names) -> list[tuple[list[str], np.ndarray]]:
         return []
     scaled, _ = _scaled(jac)
     zero = np.linalg.norm(jac, axis=0) == 0
-    _, s, vt = np.linalg.svd(scaled, full_matrices=True)
+    # the right-singular vectors only: (parameters x parameters), never the (points x points) of
+    # full_matrices=True (a review: 7 TiB for a million rows)
+    _, s, vt = np.linalg.svd(scaled, full_matrices=jac.shape[0] < jac.shape[1])
     s = np.concatenate([s, np.zeros(max(0, jac.shape[1] - s.size))])
     out = []
     for i in np.flatnonzero(zero):  # a parameter the residuals do not depend on at all
