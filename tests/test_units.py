@@ -119,3 +119,43 @@ def test_a_quantity_pint_would_misread_is_refused(text, unit, needle):
                                                 ("2 * 3 m", "m", 6.0)])
 def test_explicit_expressions_are_still_read(text, unit, value):
     assert parse_quantity(text, unit, "x") == pytest.approx(value, rel=1e-15)
+
+
+def test_quantities_are_converted_where_units_are_taken_and_refused_where_not():
+    """A review: NumPy dropped pint units (with pint's UnitStrippedWarning): a 1 um radius was
+    read as 1 m by the single-asperity functions, nN friction data as newtons times 1e9, and
+    the dimensionless model took alpha in metres."""
+    import warnings
+
+    import asperity
+    from asperity.dmt import dmt_pull_off_force
+    from asperity.fit import friction_load_data
+    from asperity.hertz import hertz_contact_radius
+    from asperity.jkr import jkr_contact_radius
+    from asperity.maugis_dugdale_load import md_contact_radius, md_normal_force
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert hertz_contact_radius(1 * u.nN, R=1 * u.um, E_star=100 * u.GPa) == \
+            hertz_contact_radius(1e-9, R=1e-6, E_star=100e9)
+        np.testing.assert_array_equal(
+            jkr_contact_radius(np.array([1.0, 2.0]) * u.nN, R=1 * u.um, w=0.1 * u.J / u.m**2, E_star=100 * u.GPa),
+            jkr_contact_radius(np.array([1e-9, 2e-9]), R=1e-6, w=0.1, E_star=100e9))
+        assert dmt_pull_off_force(R=1 * u.um, w=0.1 * u.J / u.m**2) == dmt_pull_off_force(R=1e-6, w=0.1)
+        assert md_contact_radius(1 * u.nN, R=1 * u.um, w=0.1 * u.J / u.m**2, E_star=100 * u.GPa, sigma0=1 * u.GPa) \
+            == md_contact_radius(1e-9, R=1e-6, w=0.1, E_star=100e9, sigma0=1e9)
+        assert md_normal_force(1 * u.nm, R=1 * u.um, w=0.1 * u.J / u.m**2, E_star=100 * u.GPa, lam=1.0) == \
+            md_normal_force(1e-9, R=1e-6, w=0.1, E_star=100e9, lam=1.0)
+        data = friction_load_data(np.array([1.0, 2, 3]) * u.nN, np.array([2.0, 3, 4]) * u.nN, physical=True)
+        np.testing.assert_allclose(data.y, [2e-9, 3e-9, 4e-9], rtol=1e-15)
+        # a dimensionless quantity is its number
+        loads = np.array([1.0, 2.0]) * u.dimensionless
+        np.testing.assert_array_equal(asperity.Model(0.05, 1000, 1e-3).load_curve(loads).P, [1.0, 2.0])
+    for call, needle in [(lambda: asperity.Model(0.05 * u.m, 1000, 1e-3), "alpha is a number in the model's own units"),
+                         (lambda: asperity.Model(0.05, 1000, 1e-3).load_curve(1.0 * u.N), "P is a number"),
+                         (lambda: asperity.cycle(0.05, 1000, 1e-3, d_min=0, stiffness=1 * u.N / u.m), "stiffness is"),
+                         (lambda: friction_load_data(np.array([1.0, 2]) * u.nN, np.array([2.0, 3]) * u.nN),
+                          "pass physical=True"),
+                         (lambda: hertz_contact_radius(1 * u.m, R=1 * u.um, E_star=1 * u.GPa), "compatible with N")]:
+        with pytest.raises(ValueError, match=re.escape(needle)):
+            call()

@@ -60,6 +60,11 @@ def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray
     elif type(value) is np.ndarray and value.dtype == np.float64 and (value.size or allow_empty):
         if np.isfinite(value).all():
             return value.copy()
+    if hasattr(value, "magnitude") and hasattr(value, "units") and hasattr(value, "dimensionless"):  # pint
+        if not value.dimensionless:  # NumPy would drop the unit (with pint's UnitStrippedWarning)
+            raise ValueError(f"{name} is a number in the model's own units, got the quantity {value!r}: give "
+                             "a plain number (the physical API, asperity.physical, takes SI quantities)")
+        value = value.to("dimensionless").magnitude
     _reject_non_real(value, name)
     if isinstance(value, bool | np.bool_) or _holds_bool(value):
         raise ValueError(f"{name} must be a real number, got a boolean {value!r}")

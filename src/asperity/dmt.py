@@ -28,6 +28,7 @@ from ._validation import (
     check_positive_scaled,
     check_radius,
 )
+from .units import to_si
 
 __all__ = ["dmt_load", "dmt_penetration", "DMT_PULL_OFF", "dmt_solve_load", "dmt_solve", "dmt_contact_radius",
            "dmt_normal_force", "dmt_pull_off_force"]
@@ -237,10 +238,10 @@ def dmt_contact_radius(P, *, R, w, E_star):
     B. V. Derjaguin, V. M. Muller, Yu. P. Toporov, J. Colloid Interface Sci. 53 (1975) 314;
     Maugis (1992).
     """
-    P = as_float_array(P, "P", allow_empty=True)
-    R = check_positive(R, "R")
-    w = check_nonnegative(w, "w")
-    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    P = as_float_array(to_si(P, "N", "P"), "P", allow_empty=True)
+    R = check_positive(to_si(R, "m", "R"), "R")
+    w = check_nonnegative(to_si(w, "J/m^2", "w"), "w")
+    K = check_positive_scaled(to_si(E_star, "Pa", "E_star"), "E_star", 4.0 / 3.0)
     check_broadcast(P=P, R=R, w=w, E_star=K)
     with np.errstate(all="ignore"):
         Q = 2.0 * np.pi * w * R
@@ -288,10 +289,10 @@ def dmt_normal_force(delta, *, R, w, E_star):
     ----------
     Derjaguin, Muller & Toporov (1975); Maugis (1992).
     """
-    delta = as_float_array(delta, "delta", allow_empty=True)
-    R = check_positive(R, "R")
-    w = check_nonnegative(w, "w")
-    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
+    R = check_positive(to_si(R, "m", "R"), "R")
+    w = check_nonnegative(to_si(w, "J/m^2", "w"), "w")
+    K = check_positive_scaled(to_si(E_star, "Pa", "E_star"), "E_star", 4.0 / 3.0)
     check_broadcast(delta=delta, R=R, w=w, E_star=K)
     if np.any(delta < 0):
         raise ValueError("delta (penetration) must be >= 0: DMT has no contact at negative penetration")
@@ -332,7 +333,7 @@ def dmt_pull_off_force(*, R, w):
     ----------
     Derjaguin, Muller & Toporov (1975).
     """
-    w, R = check_nonnegative(w, "w"), check_positive(R, "R")
+    w, R = check_nonnegative(to_si(w, "J/m^2", "w"), "w"), check_positive(to_si(R, "m", "R"), "R")
     check_broadcast(w=w, R=R)
     with np.errstate(all="ignore"):
         P = 2.0 * np.pi * w * R

@@ -31,6 +31,7 @@ from ._validation import (
     check_positive_scaled,
     check_radius,
 )
+from .units import to_si
 
 __all__ = ["hertz_radius", "hertz_force", "hertz_load_md", "hertz_penetration_md", "hertz_contact_radius",
            "hertz_normal_force"]
@@ -251,9 +252,9 @@ def hertz_contact_radius(P, *, R, E_star):
     ----------
     H. Hertz (1882); Johnson (1985), Eq (4.22).
     """
-    P = as_float_array(P, "P", allow_empty=True)
-    R = check_positive(R, "R")
-    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    P = as_float_array(to_si(P, "N", "P"), "P", allow_empty=True)
+    R = check_positive(to_si(R, "m", "R"), "R")
+    K = check_positive_scaled(to_si(E_star, "Pa", "E_star"), "E_star", 4.0 / 3.0)
     check_broadcast(P=P, R=R, E_star=K)
     if np.any(P < 0):
         raise ValueError(f"P (load) must be >= 0 without adhesion (Hertz), got min {P.min():g} N")
@@ -296,9 +297,9 @@ def hertz_normal_force(delta, *, R, E_star):
     ----------
     H. Hertz (1882); Johnson (1985), Eq (4.23).
     """
-    delta = as_float_array(delta, "delta", allow_empty=True)
-    R = check_positive(R, "R")
-    K = check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
+    R = check_positive(to_si(R, "m", "R"), "R")
+    K = check_positive_scaled(to_si(E_star, "Pa", "E_star"), "E_star", 4.0 / 3.0)
     check_broadcast(delta=delta, R=R, E_star=K)
     if np.any(delta < 0):
         raise ValueError("delta (penetration) must be >= 0 without adhesion (Hertz)")

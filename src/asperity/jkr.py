@@ -31,6 +31,7 @@ from ._validation import (
     scalar,
 )
 from .maugis_dugdale_load import penetration_in_maugis_units
+from .units import to_si
 
 __all__ = ["jkr_load", "jkr_penetration", "jkr_pull_off", "jkr_solve_load", "jkr_solve", "jkr_contact_radius",
            "jkr_normal_force", "jkr_pull_off_force"]
@@ -266,9 +267,9 @@ def jkr_solve(delta):
 
 
 def _physical(R, w, E_star):
-    R = check_positive(R, "R")
-    w = check_nonnegative(w, "w")
-    return R, w, check_positive_scaled(E_star, "E_star", 4.0 / 3.0)
+    R = check_positive(to_si(R, "m", "R"), "R")
+    w = check_nonnegative(to_si(w, "J/m^2", "w"), "w")
+    return R, w, check_positive_scaled(to_si(E_star, "Pa", "E_star"), "E_star", 4.0 / 3.0)
 
 
 def jkr_contact_radius(P, *, R, w, E_star):
@@ -316,7 +317,7 @@ def jkr_contact_radius(P, *, R, w, E_star):
     K. L. Johnson, K. Kendall, A. D. Roberts, Proc. R. Soc. A 324 (1971) 301, Eq (2);
     Maugis (1992).
     """
-    P = as_float_array(P, "P", allow_empty=True)
+    P = as_float_array(to_si(P, "N", "P"), "P", allow_empty=True)
     R, w, K = _physical(R, w, E_star)
     check_broadcast(P=P, R=R, w=w, E_star=K)
     with np.errstate(all="ignore"):
@@ -375,7 +376,7 @@ def jkr_normal_force(delta, *, R, w, E_star):
     ----------
     Johnson, Kendall & Roberts (1971); Maugis (1992).
     """
-    delta = as_float_array(delta, "delta", allow_empty=True)
+    delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
     R, w, K = (float(scalar(x, n)) for x, n in zip(_physical(R, w, E_star), ("R", "w", "E_star"), strict=True))
     R, w, K = np.float64(R), np.float64(w), np.float64(K)  # extreme values: inf or 0, refused below
     if w == 0.0:
@@ -422,7 +423,7 @@ def jkr_pull_off_force(*, R, w):
     ----------
     Johnson, Kendall & Roberts (1971).
     """
-    w, R = check_nonnegative(w, "w"), check_positive(R, "R")
+    w, R = check_nonnegative(to_si(w, "J/m^2", "w"), "w"), check_positive(to_si(R, "m", "R"), "R")
     check_broadcast(w=w, R=R)
     with np.errstate(all="ignore"):
         P = 1.5 * np.pi * w * R

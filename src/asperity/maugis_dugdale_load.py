@@ -37,6 +37,7 @@ import numpy as np
 
 from ._validation import as_float_array, check_finite_result, check_positive, scalar
 from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
+from .units import to_si
 
 __all__ = ["P_MAX", "md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force",
            "penetration_in_maugis_units"]
@@ -165,9 +166,10 @@ def _invert_load(P, lam, po):
 
 def _scales(R, w, E_star, sigma0, lam):
     """Validated R, w, K and the scalar lambda; exactly one of sigma0, lam must be given."""
-    R = float(scalar(check_positive(R, "R"), "R"))
-    w = float(scalar(check_positive(w, "w"), "w"))
-    E_star = float(scalar(check_positive(E_star, "E_star"), "E_star"))
+    R = float(scalar(check_positive(to_si(R, "m", "R"), "R"), "R"))
+    w = float(scalar(check_positive(to_si(w, "J/m^2", "w"), "w"), "w"))
+    E_star = float(scalar(check_positive(to_si(E_star, "Pa", "E_star"), "E_star"), "E_star"))
+    sigma0 = None if sigma0 is None else to_si(sigma0, "Pa", "sigma0")
     if (sigma0 is None) == (lam is None):
         raise ValueError("give exactly one of sigma0 (Dugdale stress, Pa) and lam (Maugis parameter)")
     if lam is None:
@@ -214,8 +216,9 @@ def penetration_in_maugis_units(delta, *, R, w, E_star):
     ----------
     D. Maugis, J. Colloid Interface Sci. 150 (1992) 243-269; Adams et al., Eqs (12)-(13).
     """
-    delta = as_float_array(delta, "delta", allow_empty=True)
-    R, w, E_star = (float(scalar(check_positive(x, n), n)) for x, n in ((R, "R"), (w, "w"), (E_star, "E_star")))
+    delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
+    R, w, E_star = (float(scalar(check_positive(to_si(x, u, n), n), n))
+                    for x, n, u in ((R, "R", "m"), (w, "w", "J/m^2"), (E_star, "E_star", "Pa")))
     R, w, K = np.float64(R), np.float64(w), np.float64(4.0 / 3.0) * np.float64(E_star)
     with np.errstate(all="ignore"):
         scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
@@ -278,7 +281,7 @@ def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     Maugis (1992), Eqs (11)-(14) of Adams et al.; Johnson & Greenwood (1997).
     """
     R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
-    P = as_float_array(P, "P", allow_empty=True)
+    P = as_float_array(to_si(P, "N", "P"), "P", allow_empty=True)
     with np.errstate(all="ignore"):
         P_hat = P / (np.pi * w * R)
     check_finite_result(P_hat, "the load P/(pi w R)", P=P, R=R, w=w)
@@ -338,7 +341,7 @@ def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
     Maugis (1992), Eqs (11)-(14) of Adams et al.
     """
     R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
-    delta = as_float_array(delta, "delta", allow_empty=True)
+    delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
     delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E_star)
     with np.errstate(all="ignore"):
         F = md_solve(delta_hat, lam)[1] * unit

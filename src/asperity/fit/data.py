@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._validation import as_float_array, check_bool, check_text
+from ..units import is_quantity, to_si
 
 __all__ = ["KINDS", "MAX_ROWS", "Dataset", "friction_load_data", "force_separation_data", "pull_off_data"]
 
@@ -147,7 +148,17 @@ class Dataset:
         return f"{self.quantity}_N"
 
 
-def _vector(value, name) -> np.ndarray:
+#: The SI unit of each column a quantity (pint) may be given for, with physical=True.
+_SI_UNITS = {"P": "N", "F": "N", "force": "N", "d": "m", "mu": ""}
+
+
+def _vector(value, name, physical=False) -> np.ndarray:
+    if is_quantity(value):  # a review: nN quantities lost their unit (values 1e9 too large)
+        base = name[:-4] if name.endswith("_err") else name
+        if physical is not True:
+            raise ValueError(f"{name} is a quantity ({value!r}) but the data are dimensionless: pass "
+                             "physical=True for SI data, or plain numbers in the model's units")
+        value = to_si(value, _SI_UNITS[base], name)
     arr = as_float_array(value, name)
     if arr.ndim != 1:
         raise ValueError(f"{name} must be 1-D, got shape {arr.shape}")
@@ -160,7 +171,7 @@ def _columns(physical, name, required=1, **columns) -> tuple:
     """The columns (None stays None) as 1-D float arrays of one length, ``physical`` and ``name``
     checked: errors name the user's arguments (``P``, ``F``, ``force_err``, ...); the first
     ``required`` columns may not be None."""
-    out = {k: None if v is None and i >= required else _vector(v, k)
+    out = {k: None if v is None and i >= required else _vector(v, k, physical)
            for i, (k, v) in enumerate(columns.items())}
     given = {k: v for k, v in out.items() if v is not None}  # the first (x, or the forces) is required
     first = next(iter(given))
