@@ -275,6 +275,19 @@ def test_corrupt_npy_header(tmp_path):
         read_topography(path, physical_sizes=1e-6, unit="nm")
 
 
+@pytest.mark.parametrize("version", [(1, 0), (2, 0)])
+def test_truncated_npy_is_refused_not_read_from_memory(tmp_path, version):
+    """A review: a .npy file a few bytes short was read with garbage heights (1e-320, 1e307, ...)
+    and then called flat or undefined, advising --fill-undefined."""
+    path = tmp_path / "short.npy"
+    with open(path, "wb") as fobj:
+        np.lib.format.write_array(fobj, np.random.default_rng(0).normal(size=(16, 16)), version=version)
+    path.write_bytes(path.read_bytes()[:-8])
+    with pytest.raises(ValueError, match=re.escape(str(path)) + r": not a valid .npy file: it is truncated "
+                                         r"\(2040 of the 2048 bytes"):
+        read_topography(path, physical_sizes=1e-6, unit="nm")
+
+
 def test_file_matched_only_by_its_size_is_refused(tmp_path):
     """SRTM .hgt tiles have no header: any file of 2 n^2 bytes matches; only *.hgt is taken as one."""
     path = tmp_path / "scan.bin"

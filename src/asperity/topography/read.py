@@ -177,11 +177,17 @@ def _check_npy(name: str) -> str:
                 shape, _, dtype = np.lib.format.read_array_header_1_0(fobj)
             elif version == (2, 0):
                 shape, _, dtype = np.lib.format.read_array_header_2_0(fobj)
-            else:
+            else:  # (3, 0): np.load's own mapping checks the size
                 array = np.load(name, mmap_mode="r", allow_pickle=False)
                 shape, dtype = array.shape, array.dtype
+            data_start = fobj.tell() if version in ((1, 0), (2, 0)) else None
     except Exception as err:
         raise ValueError(f"{name}: not a valid .npy file ({type(err).__name__}: {err})") from None
+    need = int(np.prod(shape, dtype=np.int64)) * np.dtype(dtype).itemsize
+    have = need if data_start is None else os.path.getsize(name) - data_start
+    if have < need:  # a reader would fill the rest from memory (a review: garbage heights)
+        raise ValueError(f"{name}: not a valid .npy file: it is truncated ({have} of the {need} bytes its header "
+                         f"announces for shape {shape})")
     if not (np.issubdtype(dtype, np.integer) or np.issubdtype(dtype, np.floating)):
         raise ValueError(f"{name}: the .npy array holds {dtype}, not real numbers (heights)")
     if len(shape) not in (1, 2):
