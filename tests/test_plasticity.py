@@ -177,3 +177,20 @@ def test_h_star_zero_is_no_size_effect_and_the_message_names_only_what_lacks():
         PhysicalContact("Au", S, adhesion=False, plasticity="jackson-green", h_star="1um")
     with pytest.raises(ValueError, match=r"give h_star= \(m\) \(command line: --h-star\)$"):
         PhysicalContact("Au", S, adhesion=False, plasticity="jackson-green", size_effect=True, hardness="200MPa")
+
+
+def test_the_documented_ceb_factor_is_the_computed_one():
+    """A review: the docs said u_c^(-1/2) = 0.89 psi at nu = 0.3 (the reciprocal); the library's
+    critical penetration gives 2 * 2.84 / (pi C(0.3)) = 1.12."""
+    import re
+    from pathlib import Path
+
+    from asperity.elastic_plastic import critical_penetration
+
+    alpha, H_over_E = 0.01, 0.002
+    psi = alpha / H_over_E  # (E*/H)(sigma_s/R)^(1/2), alpha = (sigma_s/R)^(1/2)
+    factor = critical_penetration(alpha, 0.3, H_over_E) ** -0.5 / psi
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "plasticity.md").read_text()
+    documented = float(re.search(r"i\.e\. \$([\d.]+)\\,\\psi\$ at", doc).group(1))
+    assert factor == pytest.approx(documented, abs=0.005)
+    assert factor == pytest.approx(2 * 2.84 / (math.pi * 1.295 * math.exp(0.736 * 0.3)), rel=1e-12)

@@ -12,7 +12,7 @@ says how soon: for :math:`\psi < 0.6` hardly any asperity yields at any practica
 and Bogy write the same group as :math:`\psi_{CEB} = (\sigma_s/\omega_c)^{1/2}` with their
 :math:`\omega_c`; with Jackson and Green's :math:`\omega_c` it is
 :math:`\bar u_c^{-1/2} = \psi\,2\cdot2.84/(\pi C)` (:func:`~asperity.elastic_plastic.critical_penetration`),
-:math:`0.89\,\psi` at :math:`\nu = 0.3`.
+:math:`1.12\,\psi` at :math:`\nu = 0.3`.
 
 :class:`~asperity.physical.PhysicalContact` computes :math:`\psi` from the material's
 hardness and reports, on every curve, the number of asperities past :math:`\omega_c` (the
