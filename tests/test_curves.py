@@ -265,3 +265,18 @@ def test_pull_off_to_dict():
     assert d == {"pull_off": 0.0, "d": None, "exists": False}
     po = asperity.pull_off(0.003, 1000, 1e-3)
     assert po.as_dict() == po.to_dict() and po.to_dict()["d"] == po.d
+
+
+def test_more_points_than_max_points_are_refused_at_once():
+    """A review: 1e7 loads ran for 146 s and 3.6 GB; the command line refused them already."""
+    import time
+
+    from asperity.curves import MAX_POINTS, Model
+
+    m = Model(0.05, 1000.0, 1e-3)
+    start = time.perf_counter()
+    with pytest.raises(ValueError, match=r"P must hold at most 1000000 values \(MAX_POINTS\), got 1000001"):
+        m.load_curve(np.linspace(1.0, 10.0, MAX_POINTS + 1))
+    with pytest.raises(ValueError, match=r"d must hold at most 1000000 values"):
+        m.separation_curve(np.linspace(0.0, 5.0, MAX_POINTS + 1))
+    assert time.perf_counter() - start < 30.0  # refused, not computed

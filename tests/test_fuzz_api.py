@@ -281,7 +281,7 @@ def _methods(tmp: str) -> dict[str, tuple]:
         "asperity.curves.Model.load_curve": (model, lambda: {"P": [1.0, 10.0]}),
         "asperity.curves.Model.separation_curve": (model, lambda: {"d": [0.5, 1.0]}),
         "asperity.curves.Model.pull_off": (model, lambda: {"d_max": 5.0}),
-        "asperity.curves.CurveResult.to_csv": (lambda: model().load_curve([1.0]),
+        "asperity.curve_result.CurveResult.to_csv": (lambda: model().load_curve([1.0]),
                                                lambda: {"path_or_buffer": os.path.join(tmp, "c.csv")}),
         "asperity.physical.PhysicalContact.load_curve": (contact, lambda: {"P": [1e-3, 1e-2]}),
         "asperity.physical.PhysicalContact.separation_curve": (contact, lambda: {"d": [1e-9, 2e-9]}),
@@ -313,7 +313,7 @@ SKIP = {
        (("friction", (3, 4, 5, 6)), ("separation", (7, 8)), ("pressure", (9,))) for n in ns},
     # Result records: frozen dataclasses the library fills from its own computations.
     **{name: "a result record the library builds" for name in (
-        "asperity.curves.CurveResult", "asperity.load_control.Branch", "asperity.maugis_dugdale_branch.BranchPoint",
+        "asperity.curve_result.CurveResult", "asperity.load_control.Branch", "asperity.maugis_dugdale_branch.BranchPoint",
         "asperity.physical_results.PhysicalCurve", "asperity.physical_results.PhysicalPullOff",
         "asperity.pull_off_search.PullOff", "asperity.quantities.Quantity", "asperity.studies.figures.FigureSpec",
         "asperity.topography.analysis.SurfaceAnalysis", "asperity.topography.summits.SummitParameters")},

@@ -20,7 +20,7 @@ Layers, each importing only downward:
 * multi-asperity integrals: :mod:`~asperity.asperity_law`,
   :mod:`~asperity.multi_asperity` (:mod:`~asperity.height_sums` for non-Gaussian heights);
   the laws by name: :mod:`~asperity.elastic_plastic`
-* curves: :mod:`~asperity.curves`; loading-unloading cycles: :mod:`~asperity.cycle`
+* curves: :mod:`~asperity.curves` (:mod:`~asperity.curve_result`); loading-unloading cycles: :mod:`~asperity.cycle`
   (``asperity.cycle(...)``, :func:`~asperity.cycle.preload_curve`); fitting measured data:
   :mod:`~asperity.fit`; the paper's figures: :mod:`~asperity.studies`;
   the command line: :mod:`~asperity.cli`; the browser explorer: :mod:`~asperity.explorer`
@@ -40,7 +40,7 @@ from ._version import __version__
 
 #: Public name -> submodule defining it; imported on first access (module ``__getattr__``).
 _EXPORTS = {
-    "CurveResult": "curves",
+    "CurveResult": "curve_result",
     "Model": "curves",
     "PullOff": "curves",
     "load_curve": "curves",
@@ -88,6 +88,7 @@ _SUBMODULES = (
     "bodies",
     "cli",
     "cos",
+    "curve_result",
     "curves",
     "cycle",
     "dmt",

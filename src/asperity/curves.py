@@ -14,65 +14,24 @@ a given load is the first separation, coming from full contact, at which
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import fields
 
 import numpy as np
 
-from ._csv import columns_to_csv, columns_to_dataframe
 from ._validation import check_1d, check_scalar_real
 from .asperity_law import ContactLaw, ModelParameters, check_law
+from .curve_result import COLUMNS, CurveResult
 from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .interaction import as_interaction
 from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
 from .multi_asperity import friction_coefficient, mean_pressure
-from .quantities import CURVE_COLUMNS
 from .tabulation import D_MAX, Tabulation, check_separation
 
-__all__ = ["CurveResult", "PullOff", "Model", "separation_curve", "load_curve", "pull_off"]
+__all__ = ["CurveResult", "COLUMNS", "PullOff", "Model", "separation_curve", "load_curve", "pull_off", "MAX_POINTS"]
 
-#: Columns of a curve, in order, with their meaning (derived from :data:`asperity.quantities.CURVE_COLUMNS`).
-COLUMNS = {name: q.meaning for name, q in CURVE_COLUMNS.items()}
-
-
-@dataclass(frozen=True)
-class CurveResult:
-    """One curve: NumPy arrays of equal length, one per column of :data:`COLUMNS`.
-
-    ``plastic`` (:math:`n_p/N`, the fraction of asperities past the critical interference,
-    :data:`asperity.quantities.PLASTIC_COLUMNS`) is None unless the per-asperity law has a
-    critical interference (e.g. Jackson-Green); then it is the last column.
-    """
-
-    d: np.ndarray
-    P: np.ndarray
-    F: np.ndarray
-    mu: np.ndarray
-    area: np.ndarray
-    pressure: np.ndarray
-    contacts: np.ndarray
-    parameters: dict = field(default_factory=dict, compare=False)
-    plastic: np.ndarray | None = None
-    #: The separations the asperities feel (an interaction shifts them from ``d``); None: ``d``.
-    d_local: np.ndarray | None = field(default=None, compare=False, repr=False)
-
-    def __len__(self) -> int:
-        return int(np.size(self.d))
-
-    def columns(self) -> dict[str, np.ndarray]:
-        """The curve as an ordered dict of column name -> array (``plastic`` last, if present)."""
-        cols = {name: np.asarray(getattr(self, name)) for name in COLUMNS}
-        if self.plastic is not None:
-            cols["plastic"] = np.asarray(self.plastic)
-        return cols
-
-    def to_dataframe(self):
-        """The curve as a :class:`pandas.DataFrame` (needs pandas: ``asperity[frame]``)."""
-        return columns_to_dataframe(self.columns(), self.parameters)
-
-    def to_csv(self, path_or_buffer=None) -> str | None:
-        """Write CSV (a header line of column names, then rows); return it if no path."""
-        return columns_to_csv(self.columns(), path_or_buffer)
-
+#: Most loads or separations one curve takes (as on the command line): beyond, a curve costs
+#: minutes and gigabytes (1e7 loads: 146 s, 3.6 GB), so it is refused at once.
+MAX_POINTS = 10**6
 
 class Model:
     """The multi-asperity contact and friction model for one parameter set, cached.
@@ -176,7 +135,7 @@ class Model:
     # -- curves ---------------------------------------------------------------------
     def separation_curve(self, d) -> CurveResult:
         """All quantities at separations ``d``: :func:`separation_curve` for this model."""
-        d = check_separation(check_1d(d, "d"), d_max=self.d_top)
+        d = check_separation(_check_size(check_1d(d, "d"), "d"), d_max=self.d_top)
         tab = self.tabulation(float(d.min()), max(float(d.max()), 10.0))
         if not self.interaction.active:
             return self._result(d, tab.sums(d)[0])
@@ -208,7 +167,7 @@ class Model:
 
     def load_curve(self, P) -> CurveResult:
         """All quantities at the stable separation for each load ``P``: :func:`load_curve` for this model."""
-        P = check_1d(P, "P")
+        P = _check_size(check_1d(P, "P"), "P")
         if not self.params.adhesive and np.any(P <= 0):
             raise ValueError("P (load) must be > 0 without adhesion (gamma = 0); "
                              f"got min {P.min():g}")
@@ -234,6 +193,13 @@ class Model:
         sums[:, 1] = P  # solved for to rounding; report the load asked for
         # Interaction hook: the apparent separation is the local one less the uniform sinking.
         return self._result(d - self.interaction.shift(P), sums, d)
+
+
+def _check_size(values, name):
+    if values.size > MAX_POINTS:
+        raise ValueError(f"{name} must hold at most {MAX_POINTS} values (MAX_POINTS), got {values.size}: split "
+                         "the curve, or sample it more coarsely")
+    return values
 
 
 def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
