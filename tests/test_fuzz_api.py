@@ -313,7 +313,8 @@ SKIP = {
        (("friction", (3, 4, 5, 6)), ("separation", (7, 8)), ("pressure", (9,))) for n in ns},
     # Result records: frozen dataclasses the library fills from its own computations.
     **{name: "a result record the library builds" for name in (
-        "asperity.curve_result.CurveResult", "asperity.load_control.Branch", "asperity.maugis_dugdale_branch.BranchPoint",
+        "asperity.curve_result.CurveResult", "asperity.load_control.Branch",
+        "asperity.maugis_dugdale_branch.BranchPoint",
         "asperity.physical_results.PhysicalCurve", "asperity.physical_results.PhysicalPullOff",
         "asperity.pull_off_search.PullOff", "asperity.quantities.Quantity", "asperity.studies.figures.FigureSpec",
         "asperity.topography.analysis.SurfaceAnalysis", "asperity.topography.summits.SummitParameters")},
