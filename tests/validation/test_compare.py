@@ -145,3 +145,17 @@ def test_progress_with_tqdm(capsys):
     pytest.importorskip("tqdm")
     assert list(progress_bar([1e-3, 2e-3], enabled=True)) == [1e-3, 2e-3]
     assert "bem" in capsys.readouterr().err
+
+
+def test_stage_reports_the_steps_before_the_loads_and_hints_at_large_maps(capsys):
+    """A review: a 4096^2 scan ran for minutes with nothing printed (the bar starts at the loads)."""
+    from asperity.validation.progress import LARGE_MAP, stage
+
+    stage("summit statistics of the 64 x 64 map", enabled=True, points=64 * 64)
+    stage("boundary elements on 4096 x 4096 points, 8 loads", enabled=True, points=4096 * 4096)
+    stage("quiet", enabled=False, points=LARGE_MAP + 1)
+    err = capsys.readouterr().err.splitlines()
+    assert err[0] == "bem: summit statistics of the 64 x 64 map"
+    assert err[1].startswith("bem: boundary elements on 4096 x 4096 points, 8 loads (slow for this many points: "
+                             "grid=512, command line --grid 512")
+    assert len(err) == 2

@@ -54,6 +54,7 @@ from .bem import DEFAULT_TOLERANCE, BemCurve, bem_contact, subsample
 from .models import AREA_METHODS, check_models, model_columns, run_icha, run_slope_law
 from .notes import comparison_notes, model_warning_notes
 from .plot import plot_validation
+from .progress import stage
 
 __all__ = ["SurfaceValidation", "validate_surface", "METHODS", "NOMINAL_B"]
 
@@ -259,7 +260,10 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     try:
         full = topo if topo.unit in (None, "m") else topo.to_unit("m")
         topo = subsample(full, grid)
+        shape = tuple(int(n) for n in topo.nb_grid_pts)
         if "gw" in models:
+            stage(f"summit statistics of the {' x '.join(map(str, shape))} map", enabled=progress,
+                  points=int(np.prod(shape)))
             start = time.perf_counter()
             analysis = analyse_surface(topo)
             t_analysis = time.perf_counter() - start
@@ -282,6 +286,8 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
                 raise ValueError(f"{source or 'surface'}: its {method} summit parameters give no GW surface ({err}): "
                                  "too few summits or too little roughness; compare without GW "
                                  "(models=...; command line: --model icha,persson)") from None
+    stage(f"boundary elements on {' x '.join(map(str, shape))} points, {np.size(P)} loads", enabled=progress,
+          points=int(np.prod(shape)))
     bem = bem_contact(topo, P, E_star=mat.E_star, periodic=periodic, tolerance=tolerance, maxiter=maxiter,
                       progress=progress)
     table = {"P_N": bem.P, "p_Pa": bem.P / A0, "fraction_bem": bem.area_fraction, "area_bem_m2": bem.area,

@@ -2,7 +2,8 @@
 
 :func:`progress_bar` wraps an iterable: with tqdm installed it is a tqdm bar on standard
 error; without tqdm each step prints one plain line ``bem: load 3/8 (P = 0.001 N)`` on
-standard error; with ``enabled=False`` nothing is printed.
+standard error; with ``enabled=False`` nothing is printed.  :func:`stage` reports the steps
+before the loads (reading and analysing a large map can take minutes).
 """
 
 from __future__ import annotations
@@ -10,7 +11,20 @@ from __future__ import annotations
 import importlib
 import sys
 
-__all__ = ["progress_bar"]
+__all__ = ["progress_bar", "stage"]
+
+
+#: Points of a map above which the stage report suggests averaging it first (--grid).
+LARGE_MAP = 1024 * 1024
+
+
+def stage(message: str, *, enabled: bool, points: int = 0, stream=None) -> None:
+    """One line ``bem: message`` on ``stream`` (standard error) if ``enabled``; for a map of more
+    than :data:`LARGE_MAP` ``points``, with the hint to average it first (``grid=``, ``--grid``)."""
+    if enabled:
+        hint = (" (slow for this many points: grid=512, command line --grid 512, averages the map first)"
+                if points > LARGE_MAP else "")
+        print(f"bem: {message}{hint}", file=sys.stderr if stream is None else stream, flush=True)
 
 
 def _tqdm():
