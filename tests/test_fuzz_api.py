@@ -587,3 +587,16 @@ def test_exhaustive(tmp):
                 except AssertionError as err:
                     failures.append(str(err).splitlines()[0][:300])
     assert not failures, "\n".join(failures)
+
+
+def test_numpy_values_are_shown_plainly_in_messages():
+    """A review: messages showed 'array(1.e-300)', 'np.float64(0.0)' and 'array([nan])'."""
+    import asperity
+    from asperity.maugis_dugdale_branch import md_branch_end
+
+    for call, needle in [(lambda: md_branch_end(np.float64(1e-300)), "got 1e-300"),
+                         (lambda: asperity.Model(np.float64(0.0), 1000.0), "got 0.0"),
+                         (lambda: asperity.Model(0.05, 1000.0).load_curve(np.array([np.nan, 1.0])), "got [nan, 1.0]")]:
+        with pytest.raises(ValueError) as err:
+            call()
+        assert needle in str(err.value) and "array(" not in str(err.value) and "np.float64" not in str(err.value)

@@ -67,26 +67,27 @@ def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray
         value = value.to("dimensionless").magnitude
     _reject_non_real(value, name)
     if isinstance(value, bool | np.bool_) or _holds_bool(value):
-        raise ValueError(f"{name} must be a real number, got a boolean {value!r}")
+        raise ValueError(f"{name} must be a real number, got a boolean {_short_repr(value)}")
     if np.ma.is_masked(value):
-        raise ValueError(f"{name} must not have masked (missing) values, got {value!r}")
+        raise ValueError(f"{name} must not have masked (missing) values, got {_short_repr(value)}")
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number or an array of real numbers, got {value!r}") from None
+        raise ValueError(f"{name} must be a real number or an array of real numbers, "
+                         f"got {_short_repr(value)}") from None
     if raw.dtype == np.bool_:
-        raise ValueError(f"{name} must be a real number, got a boolean {value!r}")
+        raise ValueError(f"{name} must be a real number, got a boolean {_short_repr(value)}")
     if np.iscomplexobj(raw):
-        raise ValueError(f"{name} must be a real number, got a complex value {value!r}")
+        raise ValueError(f"{name} must be a real number, got a complex value {_short_repr(value)}")
     try:
         arr = raw.astype(float)
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a real number or an array of real numbers, "
-                         f"got {value!r}") from None
+                         f"got {_short_repr(value)}") from None
     if arr.size == 0 and not allow_empty:
         raise ValueError(f"{name} must not be empty")
     if not np.all(np.isfinite(arr)):
-        raise ValueError(f"{name} must be finite (no NaN or infinity), got {value!r}")
+        raise ValueError(f"{name} must be finite (no NaN or infinity), got {_short_repr(value)}")
     return arr
 
 
@@ -104,7 +105,7 @@ def check_positive(value, name: str) -> np.ndarray:
     """``value`` as a float array; every element must satisfy 0 < value < inf."""
     arr = as_float_array(value, name)
     if (arr <= 0).any():
-        raise ValueError(f"{name} must be > 0 (valid range 0 < {name} < inf), got {value!r}")
+        raise ValueError(f"{name} must be > 0 (valid range 0 < {name} < inf), got {_short_repr(value)}")
     return arr
 
 
@@ -112,7 +113,7 @@ def check_nonnegative(value, name: str) -> np.ndarray:
     """``value`` as a float array; every element must satisfy 0 <= value < inf."""
     arr = as_float_array(value, name)
     if (arr < 0).any():
-        raise ValueError(f"{name} must be >= 0 (valid range 0 <= {name} < inf), got {value!r}")
+        raise ValueError(f"{name} must be >= 0 (valid range 0 <= {name} < inf), got {_short_repr(value)}")
     return arr
 
 
@@ -120,7 +121,7 @@ def check_range(value, name: str, lo: float, hi: float) -> np.ndarray:
     """``value`` as a float array; every element must satisfy lo <= value <= hi."""
     arr = as_float_array(value, name)
     if ((arr < lo) | (arr > hi)).any():
-        raise ValueError(f"{name} must lie in [{lo:g}, {hi:g}], got {value!r}")
+        raise ValueError(f"{name} must lie in [{lo:g}, {hi:g}], got {_short_repr(value)}")
     return arr
 
 
@@ -136,7 +137,7 @@ def check_interval(value, name: str, lo: float, hi: float, *, lo_open: bool = Fa
     above = arr >= hi if hi_open else arr > hi
     if np.any(below | above):
         left, right = "(" if lo_open else "[", ")" if hi_open else "]"
-        raise ValueError(f"{name} must lie in {left}{lo:g}, {hi:g}{right}{context}, got {value!r}")
+        raise ValueError(f"{name} must lie in {left}{lo:g}, {hi:g}{right}{context}, got {_short_repr(value)}")
     return arr
 def check_scalar_range(value, name: str, lo: float, hi: float, *, what: str = "") -> float:
     """One finite real number with lo <= value <= hi, as a float (shape parameters, weights).
@@ -154,7 +155,7 @@ def check_scalar_range(value, name: str, lo: float, hi: float, *, what: str = ""
         raise ValueError(f"{label} must be a scalar, got an array of shape {arr.shape}")
     x = float(arr)
     if not lo <= x <= hi:
-        raise ValueError(f"{label} must lie in [{lo:g}, {hi:g}], got {value!r}")
+        raise ValueError(f"{label} must lie in [{lo:g}, {hi:g}], got {_short_repr(value)}")
     return x
 
 
@@ -162,7 +163,7 @@ def check_poisson(nu) -> np.ndarray:
     """Poisson's ratio of an isotropic elastic solid: -1 < nu < 0.5."""
     arr = as_float_array(nu, "nu")
     if ((arr <= -1.0) | (arr >= 0.5)).any():
-        raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 0.5), got {nu!r}")
+        raise ValueError(f"nu (Poisson's ratio) must lie in (-1, 0.5), got {_short_repr(nu)}")
     return arr
 
 
@@ -233,7 +234,7 @@ def check_scalar_positive(value, name: str, unit: str | None = None, *, allow_ze
     if x < 0 or (x == 0 and not allow_zero):
         bound = f">= 0{_unit_text(unit)} (valid range 0 <= {name} < inf)" if allow_zero else \
             f"> 0{_unit_text(unit)} (valid range 0 < {name} < inf)"
-        raise ValueError(f"{name} must be {bound}, got {value!r}")
+        raise ValueError(f"{name} must be {bound}, got {_short_repr(value)}")
     return x
 
 
@@ -244,7 +245,7 @@ def check_optional_positive(value, name: str, unit: str | None = None, *, allow_
     x = _as_scalar(value, name, unit)
     if x < 0 or (x == 0 and not allow_zero):
         bound = ">= 0" if allow_zero else "> 0"
-        raise ValueError(f"{name} must be {bound}{_unit_text(unit)} or None (missing), got {value!r}")
+        raise ValueError(f"{name} must be {bound}{_unit_text(unit)} or None (missing), got {_short_repr(value)}")
     return x
 
 
@@ -267,7 +268,7 @@ def check_scalar_poisson(value, name: str = "nu") -> float:
     """One Poisson's ratio of an isotropic elastic solid, -1 < nu < 0.5, as a float."""
     x = _as_scalar(value, name, "")
     if not -1.0 < x < 0.5:
-        raise ValueError(f"{name} (Poisson's ratio) must lie in (-1, 0.5), got {value!r}")
+        raise ValueError(f"{name} (Poisson's ratio) must lie in (-1, 0.5), got {_short_repr(value)}")
     return x
 
 
@@ -297,7 +298,7 @@ def check_integer(value, name: str, lo: int, hi: int) -> int:
     if isinstance(value, bool | np.bool_) or not isinstance(value, int | np.integer):
         raise TypeError(f"{name} must be an integer, got {type(value).__name__} {_short_repr(value)}")
     if not lo <= value <= hi:
-        raise ValueError(f"{name} must lie in [{lo}, {hi}], got {value!r}")
+        raise ValueError(f"{name} must lie in [{lo}, {hi}], got {_short_repr(value)}")
     return int(value)
 
 

@@ -9,9 +9,15 @@ __all__ = ["IMAGE_FORMATS", "check_path", "check_output_path", "check_image", "s
 
 
 def short_repr(value) -> str:
-    """``repr(value)``, shortened for an error message (:func:`reprlib.repr`)."""
+    """``repr(value)``, shortened for an error message (:func:`reprlib.repr`); NumPy numbers and
+    arrays of numbers as plain Python ones (``1e+300``, ``[nan]``, not ``array(1.e+300)``)."""
     import reprlib
 
+    import numpy as np
+
+    if isinstance(value, np.generic | np.ndarray) and np.asarray(value).dtype.kind in "fiub":
+        arr = np.asarray(value)
+        value = arr.item() if arr.ndim == 0 else arr.tolist()
     return reprlib.repr(value)
 
 

@@ -40,6 +40,7 @@ import numpy as np
 from scipy import optimize
 
 from ._validation import as_float_array, check_positive, scalar
+from ._validation_files import short_repr
 
 __all__ = ["LAMBDA_C", "LAMBDA_RANGE", "A_MAX", "DELTA_MAX", "BranchPoint", "check_lambda", "md_branch_end",
            "md_solve", "md_pull_off"]
@@ -61,7 +62,7 @@ def check_lambda(lam):
     lo, hi = LAMBDA_RANGE
     if ((lam < lo) | (lam > hi)).any():
         raise ValueError(f"lam (Maugis parameter) must lie in [{lo:g}, {hi:g}] (use asperity.dmt below and "
-                         f"asperity.jkr above), got {lam!r}")
+                         f"asperity.jkr above), got {short_repr(lam)}")
     return lam
 
 

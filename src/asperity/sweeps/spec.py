@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._validation import as_float_array, check_path
+from .._validation_files import short_repr
 from .._version import __version__
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 
@@ -227,7 +228,7 @@ def _parameter(name, value, kind):
         raise ValueError(f"{name} must be a number or a 1-D array, got shape {arr.shape}")
     bad = [x for x in arr.ravel() if not q.contains(float(x))]
     if bad:
-        raise ValueError(f"{name} must satisfy {q.range_text()}, got {bad[0]!r}")
+        raise ValueError(f"{name} must satisfy {q.range_text()}, got {short_repr(bad[0])}")
     return float(arr) if arr.ndim == 0 else arr
 
 

@@ -43,7 +43,7 @@ import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._json import dumps
-from .._validation import check_scalar_positive
+from .._validation import check_bool, check_scalar_positive
 from ..materials import as_material
 from ..persson import rms_slope
 from ..physical import PhysicalContact
@@ -253,6 +253,7 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     """
     mat = as_material(material)
     models = check_models(models)
+    progress = check_bool(progress, "progress")
     if "gw" not in models and interaction != "none":
         raise ValueError(f"interaction={interaction!r} corrects the GW model: include 'gw' in models")
     topo, source = _topography(surface, read_kwargs)
