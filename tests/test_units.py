@@ -1,5 +1,6 @@
 """asperity.units: pint quantities and unit strings to SI floats."""
 
+import math
 import re
 
 import numpy as np
@@ -159,3 +160,23 @@ def test_quantities_are_converted_where_units_are_taken_and_refused_where_not():
                          (lambda: hertz_contact_radius(1 * u.m, R=1 * u.um, E_star=1 * u.GPa), "compatible with N")]:
         with pytest.raises(ValueError, match=re.escape(needle)):
             call()
+
+
+@pytest.mark.parametrize("text, needle", [("1_0 nN", "digits 0-9"), ("\u0661 nN", "digits 0-9"),
+                                          ("nN", "has no number"), ("\u00b5N", "has no number"),
+                                          ("1e-400 N", "smaller than the smallest double")])
+def test_numbers_python_would_misread_are_refused(text, needle):
+    """A review: '1_0' read as 10, an Arabic-Indic digit as 1, a bare unit as 1 of it, and
+    1e-400 N as 0 N (then mu = nan)."""
+    with pytest.raises(ValueError, match=re.escape(needle)):
+        parse_quantity(text, "N", "load")
+
+
+def test_strict_float_reads_decimals_only():
+    from asperity.units import strict_float
+
+    assert [strict_float(t) for t in ("1", " -2.5e3 ", ".5", "5.", "1e-320")] == [1.0, -2500.0, 0.5, 5.0, 1e-320]
+    assert math.isnan(strict_float("NaN")) and strict_float("-inf") == -math.inf
+    for bad in ("1_0", "\u0661", "0x10", "1e-400", "", "1 2", "infinit"):
+        with pytest.raises(ValueError):
+            strict_float(bad)

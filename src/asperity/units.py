@@ -21,7 +21,9 @@ import re
 
 import numpy as np
 
-__all__ = ["to_si", "parse_quantity", "is_quantity", "unit_registry", "format_si"]
+from ._numbers import strict_float
+
+__all__ = ["to_si", "parse_quantity", "is_quantity", "unit_registry", "format_si", "strict_float"]
 
 _INSTALL = "pip install 'asperity[units]'"
 
@@ -115,10 +117,13 @@ def _check_labels(unit, name) -> None:
             raise TypeError(f"{label} must be a string, got {type(value).__name__} {value!r}")
 
 
-def _plain_number(text: str):
+def _plain_number(text: str, name: str = "value", original: str | None = None):
+    """``text`` as a plain number, or None if it is not one; a number that underflows is an error."""
     try:
-        return float(text)
-    except ValueError:
+        return strict_float(text)
+    except ValueError as err:
+        if "smallest double" in str(err):
+            raise ValueError(f"{name} = {text if original is None else original!r}: {err}") from None
         return None
 
 
@@ -160,7 +165,7 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
     if not isinstance(text, str):
         raise ValueError(f"{name} must be a string such as '2nm', got {text!r}")
     stripped = text.strip()
-    number = _plain_number(stripped)
+    number = _plain_number(stripped, name, text)
     if number is not None:
         if require_unit and unit:
             example = stripped if math.isfinite(number) else "1"
@@ -175,7 +180,8 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
                          f"(or give a plain number in {_unit_label(unit)})") from None
     split = _NUMBER_UNIT.match(stripped)
     if split is not None:  # '60nm', '1e0J/m^2': the number read by Python, the unit by pint
-        scaled = _decimal_scaled(float(split.group(1)), split.group(2), unit, name, registry)
+        number = _plain_number(split.group(1), name, text)
+        scaled = _decimal_scaled(number, split.group(2), unit, name, registry)
         if scaled is not None:
             return scaled
     try:
@@ -191,7 +197,7 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
 
 #: Two terms side by side with only spaces between, the second a number (pint would multiply
 #: them: '1 nN 2' is 2 nN, '2 1 nN' too); '5 1/um^2' (five per square micrometre) is the exception.
-_JUXTAPOSED = re.compile(r"[A-Za-z\u00b5\u03bc\u00c5\u212b\d.]\s+(?!1\s*/)(?:\d|\.\d)")
+_JUXTAPOSED = re.compile(r"[A-Za-z\u00b5\u03bc\u00c5\u212b\d.]\s+(?!1\s*/)(?:\d|\.\d)", re.ASCII)
 
 
 def _check_one_number(stripped: str, text: str, name: str) -> None:
@@ -202,6 +208,10 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
                 else "")
         raise ValueError(f"{name} = {text!r}: one number with its unit, '.' the decimal point; ',' and ';' are "
                          f"not part of a quantity{mean}")
+    if any(ch.isdigit() and not ch.isascii() for ch in stripped) or re.search(r"\d_\d", stripped):
+        raise ValueError(f"{name} = {text!r}: write the number with the digits 0-9 (no '_' between them)")
+    if not re.match(r"[+-]?(?:\d|\.\d|\(|nan|inf)", stripped, re.ASCII | re.IGNORECASE):
+        raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {stripped or 'nm'}')")
     if _JUXTAPOSED.search(stripped):
         raise ValueError(f"{name} = {text!r}: one number with its unit (e.g. '2nm'), or an expression with "
                          "explicit operators ('3 m + 2 m'); numbers set side by side are not read")
@@ -209,7 +219,7 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
 
 #: A number followed by a unit that starts with a letter, '/' or '1/' ('1/um^2', '5 1/um^2'; '*', '^' go to pint).
 _NUMBER_UNIT = re.compile(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*(?![eE][+-]?\d)"
-                          r"((?:[A-Za-z\u00b5\u03bc\u00c5\u212b/]|1\s*/).*)$")
+                          r"((?:[A-Za-z\u00b5\u03bc\u00c5\u212b/]|1\s*/).*)$", re.ASCII)
 
 
 def _decimal_scaled(number: float, unit_text: str, unit: str, name: str, registry) -> float | None:

@@ -26,6 +26,7 @@ from __future__ import annotations
 import argparse
 import os
 
+from .._numbers import strict_float
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS, PLASTIC_COLUMNS
 from ._lists import (
     MAX_POINTS,
@@ -38,6 +39,7 @@ from ._lists import (
 )
 
 __all__ = [
+    "decimal",
     "MAX_POINTS",
     "UsageError",
     "parse_list",
@@ -110,6 +112,16 @@ CONTACT_OPTIONS = (*BODY_OPTIONS, *SURFACE_OPTIONS)
 
 
 # -- paths ---------------------------------------------------------------------------------
+def decimal(text: str) -> float:
+    """An argparse type: a plain decimal number (:func:`asperity.units.strict_float`: not '1_0',
+    not other scripts' digits, not a number that underflows to 0); named ``float`` so argparse
+    says "invalid float value"."""
+    return strict_float(text)
+
+
+decimal.__name__ = "float"
+
+
 def output_file(text: str) -> str:
     """argparse type of ``-o FILE`` and ``--plot FILE``: not empty, not a directory, in a directory that exists."""
     if text == "":
@@ -133,11 +145,11 @@ def output_dir(text: str) -> str:
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     """The dimensionless model parameters: ``--alpha --beta --gamma --nu --h-over-b``."""
     g = parser.add_argument_group("model parameters (dimensionless), or a physical contact below")
-    g.add_argument("--alpha", type=float, help=MODEL_HELP["alpha"])
-    g.add_argument("--beta", type=float, help=MODEL_HELP["beta"])
-    g.add_argument("--gamma", type=float, default=None, help=MODEL_HELP["gamma"])
-    g.add_argument("--nu", type=float, default=None, help=_NU_HELP)
-    g.add_argument("--h-over-b", dest="h_over_b", type=float, default=None, help=MODEL_HELP["h_over_b"])
+    g.add_argument("--alpha", type=decimal, help=MODEL_HELP["alpha"])
+    g.add_argument("--beta", type=decimal, help=MODEL_HELP["beta"])
+    g.add_argument("--gamma", type=decimal, default=None, help=MODEL_HELP["gamma"])
+    g.add_argument("--nu", type=decimal, default=None, help=_NU_HELP)
+    g.add_argument("--h-over-b", dest="h_over_b", type=decimal, default=None, help=MODEL_HELP["h_over_b"])
     add_heights_argument(parser, g)
     add_plasticity_arguments(parser)
 
@@ -177,7 +189,7 @@ def add_plasticity_arguments(parser: argparse.ArgumentParser) -> None:
                         "turns the size effect on, --hardness then being H0")
     p.add_argument("--size-effect", dest="size_effect", action="store_true",
                    help="with a physical contact: the Nix-Gao size effect with H0 and h* from the materials table")
-    p.add_argument("--plastic-threshold", dest="plastic_threshold", type=float, default=None,
+    p.add_argument("--plastic-threshold", dest="plastic_threshold", type=decimal, default=None,
                    help="with a physical contact and the elastic law: note when more than this share of the "
                         "asperities in contact is past the critical interference (default 0.01)")
 
@@ -221,7 +233,7 @@ def add_contact_arguments(parser: argparse.ArgumentParser, *,
     s.add_argument("--sigma-s", "--sigma", dest="sigma_s", metavar="LENGTH", help=_help("sigma_s", ", e.g. 2nm"))
     s.add_argument("--rms", metavar="LENGTH", help=_help("rms", ", converted to sigma_s with --bandwidth",
                                                          symbol="sigma"))
-    s.add_argument("--bandwidth", "--alpha-n", dest="alpha_n", type=float, metavar="ALPHA_N",
+    s.add_argument("--bandwidth", "--alpha-n", dest="alpha_n", type=decimal, metavar="ALPHA_N",
                    help=f"{PHYSICAL_PARAMETERS['alpha_n'].help()}; needed with --rms")
     s.add_argument("--R", "--radius", dest="R", metavar="LENGTH", help=_help("R", ", e.g. 1um"))
     s.add_argument("--eta", "--density", dest="eta", metavar="DENSITY", help=_help("eta", ", e.g. 1e12/m^2 "
@@ -239,7 +251,7 @@ def add_contact_arguments(parser: argparse.ArgumentParser, *,
     f.add_argument("--tau", metavar="STRESS", help=_help("tau", ", constant (e.g. 50MPa), instead of "
                                                                 "Hurtado-Kim; physical contacts only"))
     for name in ("tau_f1", "tau_f2", "a1", "a2"):
-        f.add_argument(f"--{name.replace('_', '-')}", dest=name, type=float, help=MODEL_PARAMETERS[name].help())
+        f.add_argument(f"--{name.replace('_', '-')}", dest=name, type=decimal, help=MODEL_PARAMETERS[name].help())
     parser.add_argument("--no-comments", action="store_true",
                         help="a physical result starts with '#' lines stating the contact computed (read the CSV "
                              "with pandas.read_csv(path, comment='#')); this leaves them out. JSON output is "
@@ -262,14 +274,14 @@ def add_body_arguments(parser: argparse.ArgumentParser, *, adhesion: bool = True
                    help="table name: 'Au' (on a rigid flat), 'Au/Au' (two bodies), 'A/B'")
     b.add_argument("--E", metavar="STRESS", help=_help("E", " of the (first) body, e.g. 70GPa"))
     try:
-        b.add_argument("--nu", type=float, default=None, help=_NU_HELP)
+        b.add_argument("--nu", type=decimal, default=None, help=_NU_HELP)
     except argparse.ArgumentError:  # already there: the model group's --nu serves both
         pass
     b.add_argument("--material2", metavar="NAME", help="second elastic body from the table, instead of the "
                                                        "rigid flat (one body, e.g. Si)")
     b.add_argument("--E2", metavar="STRESS", help="Young's modulus E2 [Pa] of the second body (with --nu2: a body of "
                                                   "your own; with --material2: replaces the table's)")
-    b.add_argument("--nu2", type=float, help="Poisson's ratio nu2 of the second body, -1 < nu2 < 0.5")
+    b.add_argument("--nu2", type=decimal, help="Poisson's ratio nu2 of the second body, -1 < nu2 < 0.5")
     b.add_argument("--b", metavar="LENGTH", help=_help("b", ", e.g. 0.25nm"))
     if not adhesion:
         return

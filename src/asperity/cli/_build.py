@@ -14,6 +14,7 @@ Nothing here imports NumPy, SciPy or the model at module level.
 
 from __future__ import annotations
 
+from .._numbers import strict_float
 from .._warnings import AsperityWarning
 from ._args import CONTACT_OPTIONS
 from ._lists import UsageError, optional_quantity, quantity, quantity_items
@@ -63,7 +64,7 @@ def _number(text, name: str):
     if text is None:
         return None
     try:
-        return float(text)
+        return strict_float(text)
     except ValueError:
         shown = repr(text) if len(text) <= 60 else repr(text[:60]) + "..."
         raise UsageError(f"{name}: expected a number (dimensionless, without a physical contact), "

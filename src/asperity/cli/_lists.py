@@ -12,6 +12,8 @@ Nothing here imports NumPy or pint at module level.
 
 from __future__ import annotations
 
+from .._numbers import strict_float
+
 __all__ = [
     "MAX_POINTS",
     "UsageError",
@@ -118,13 +120,13 @@ def parse_list(text: str, *, log: bool, name: str):
     if ":" in text:
         start, stop, count = _range_parts(text, name)
         try:
-            lo, hi = float(start), float(stop)
+            lo, hi = strict_float(start), strict_float(stop)
         except ValueError:
             raise bad from None
         return _spaced(lo, hi, count, log=log, name=name, text=text)
     items = _items(text, name)
     try:
-        values = np.array([float(v) for v in items])
+        values = np.array([strict_float(v) for v in items])
     except ValueError:
         raise bad from None
     if not np.all(np.isfinite(values)):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ._args import add_body_arguments, add_output_arguments, add_surface_arguments
+from ._args import add_body_arguments, add_output_arguments, add_surface_arguments, decimal
 
 NAME = "bem"
 #: The library's interaction names and boundary-element tolerance (asperity.interaction.INTERACTIONS,
@@ -45,7 +45,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--model", action="append", metavar="LIST",
                         help="models beside the boundary elements, comma-separated (or the option repeated): gw "
                              "(default), icha, persson, bgt")
-    parser.add_argument("--tolerance", type=float, default=DEFAULT_TOLERANCE,
+    parser.add_argument("--tolerance", type=decimal, default=DEFAULT_TOLERANCE,
                         help="boundary-element convergence: penetration below this fraction of the rms height "
                              "and tensile pixel forces below it times the mean pixel force "
                              f"(default {DEFAULT_TOLERANCE:g})")

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 
+from .._numbers import strict_float
 from ..quantities import CURVE_COLUMNS, CYCLE_QUANTITIES
 from ._args import (
     UsageError,
@@ -68,7 +69,7 @@ def _number(text: str | None, option: str, physical: bool):
     if physical:
         return quantity(text, OPTIONS[option][1], f"--{option.replace('_', '-')}")
     try:
-        return float(text)
+        return strict_float(text)
     except ValueError:
         raise UsageError(f"--{option.replace('_', '-')}: expected a number, got {text!r} (quantities with units "
                          "need a physical contact: --material ...)") from None

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 
+from .._numbers import strict_float
 from ._args import BODY_OPTIONS, SURFACE_OPTIONS, UsageError, add_contact_arguments, output_file, quantity
 from ._build import contact_from_args, heights_from_args, law_from_args, material_from_args
 
@@ -111,7 +112,7 @@ def _budget(text):
     from ..fit.runner import check_budget
 
     try:
-        return check_budget(float(text))
+        return check_budget(strict_float(text))
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected seconds > 0 or inf, got {text!r}") from None
 
@@ -161,7 +162,7 @@ def _pairs(text, option):
 def _value(name, text, option):
     """A number, or a quantity with a unit for a physical parameter name (R_m=20nm)."""
     try:
-        return float(text)
+        return strict_float(text)
     except ValueError:
         pass
     from ..quantities import FIT_PARAMETERS, PHYSICAL_PARAMETERS

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import argparse
 
-from ._args import add_output_arguments, parse_list
+from ._args import add_output_arguments, decimal, parse_list
 
 NAME = "md"
 HELP = "one Maugis-Dugdale asperity"
@@ -17,7 +17,7 @@ DESCRIPTION = ("One Maugis-Dugdale sphere in Maugis' units: radius A, load P/(pi
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--lam", type=float, required=True, help="Maugis parameter lambda > 0 (Eq 14)")
+    parser.add_argument("--lam", type=decimal, required=True, help="Maugis parameter lambda > 0 (Eq 14)")
     what = parser.add_mutually_exclusive_group(required=True)
     what.add_argument("--delta", metavar="LIST",
                       help="penetrations Delta: 'a,b,c' or 'start:stop:count' (linearly spaced)")

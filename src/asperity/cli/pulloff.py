@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from .._numbers import strict_float
 from ._args import UsageError, add_contact_arguments, add_model_arguments, add_output_arguments
 from ._build import contact_from_args, is_physical, model_from_args
 
@@ -44,7 +45,7 @@ def _d_max(text, physical: bool):
     if text is None:
         return None
     try:
-        return float(text)
+        return strict_float(text)
     except ValueError:
         if physical:
             return text  # a length: PhysicalContact.pull_off converts it and names a bad one

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from urllib.parse import parse_qs, urlencode
 
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS, Quantity
+from ..units import strict_float
 
 __all__ = ["MODES", "START", "MAX_POINTS", "Field", "State", "fields", "distributions", "parse_value", "number_text",
            "state_from_query", "default_state", "used", "material_values", "CUSTOM", "ELASTIC"]
@@ -329,7 +330,7 @@ def parse_value(f: Field, text: str):
                              f"{_example(f.unit)}, got {text!r}") from None
         return value
     try:
-        value = float(text)
+        value = strict_float(text)
     except ValueError:
         raise ValueError(f"{name}: expected a number, got {text!r}") from None
     if not math.isfinite(value):

@@ -33,7 +33,7 @@ import re
 import numpy as np
 
 from ..quantities import FIT_PARAMETERS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
-from ..units import parse_quantity
+from ..units import parse_quantity, strict_float
 from .data import KINDS, MAX_ROWS, Dataset
 
 __all__ = ["ROLES", "read_data", "as_dataset"]
@@ -323,9 +323,10 @@ def _number(cell: str, name, line_no, header) -> float:
     if text.lower() in _NAN_TEXT:
         return float("nan")
     try:
-        value = float(text)
-    except ValueError:
-        raise ValueError(f"{name}, line {line_no}, column {header!r}: {text!r} is not a number") from None
+        value = strict_float(text)
+    except ValueError as err:
+        why = str(err) if "smallest double" in str(err) else f"{text!r} is not a number"
+        raise ValueError(f"{name}, line {line_no}, column {header!r}: {why}") from None
     if np.isinf(value):
         raise ValueError(f"{name}, line {line_no}, column {header!r}: {text!r} is not finite")
     return value

@@ -13,6 +13,7 @@ import math
 import numpy as np
 
 from .._validation import as_float_array, check_output_path, check_path, check_text
+from ..units import strict_float
 
 __all__ = ["MIN_SAMPLES", "read_samples", "write_samples", "check_samples", "sample_moments", "standardise"]
 
@@ -70,7 +71,7 @@ def read_samples(path) -> np.ndarray:
         if not text or text.startswith("#"):
             continue
         try:
-            x = float(text)
+            x = strict_float(text)
         except ValueError:
             numeric = all(_is_number(cell) for cell in text.replace(";", ",").split(",")) or \
                 all(_is_number(cell) for cell in text.split())
@@ -91,7 +92,7 @@ def read_samples(path) -> np.ndarray:
 
 def _is_number(text: str) -> bool:
     try:
-        float(text)
+        strict_float(text)
     except ValueError:
         return False
     return True

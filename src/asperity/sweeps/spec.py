@@ -35,6 +35,7 @@ from .._validation import as_float_array, check_path
 from .._validation_files import short_repr
 from .._version import __version__
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
+from ..units import strict_float
 
 __all__ = ["MODEL_NAMES", "PHYSICAL_NAMES", "CHUNK_SETS", "SweepSpec", "default_chunk_sets", "make_spec", "read_points"]
 
@@ -332,7 +333,7 @@ def read_points(path: str) -> dict[str, np.ndarray]:
                 cols[h].append(v.strip())
                 continue
             try:
-                cols[h].append(float(v))
+                cols[h].append(strict_float(v))
             except ValueError:
                 raise ValueError(f"points: line {i} of {path!r}: {h} = {v!r} is not a number") from None
     return {h: (np.array(v, dtype=object) if h == "material" else np.array(v)) for h, v in cols.items()}

@@ -1,0 +1,45 @@
+"""Reading a plain decimal number strictly (no NumPy: the command line imports it at start).
+
+:func:`strict_float` is Python's ``float`` for text without its surprises: ``'1_0'`` (10),
+other scripts' digits (``'١'``, 1) and numbers that underflow to 0 (``'1e-400'``) are refused.
+:mod:`asperity.units` re-exports it.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+__all__ = ["strict_float"]
+
+#: A decimal number as written in ASCII: what :func:`strict_float` reads (with nan, inf).
+_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
+_SPECIAL = {"nan": math.nan, "+nan": math.nan, "-nan": math.nan, "inf": math.inf, "+inf": math.inf,
+            "-inf": -math.inf, "infinity": math.inf, "+infinity": math.inf, "-infinity": -math.inf}
+
+
+def strict_float(text: str) -> float:
+    """``float(text)`` for a plain decimal number only: ASCII digits, an optional sign, point and
+    exponent, or nan/inf; surrounding spaces are allowed.
+
+    Python's ``float`` also reads ``'1_0'`` as 10 and other scripts' digits (``'١'`` as 1): a
+    review found both in data files read silently.  A nonzero number too small for a double
+    (``'1e-400'``, which ``float`` makes 0) is refused too.
+
+    Raises
+    ------
+    ValueError
+        For anything else, with a message in ``float``'s words.
+    """
+    if not isinstance(text, str):
+        raise ValueError(f"could not convert {type(text).__name__} to float: {text!r}")
+    stripped = text.strip()
+    special = _SPECIAL.get(stripped.lower())
+    if special is not None:
+        return special
+    if not _DECIMAL.fullmatch(stripped):
+        raise ValueError(f"could not convert string to float: {text!r}")
+    value = float(stripped)
+    if value == 0.0 and re.search(r"[1-9]", stripped.split("e")[0].split("E")[0]):
+        raise ValueError(f"{text!r} is smaller than the smallest double (about 5e-324): it would be read as 0")
+    return value
