@@ -336,3 +336,9 @@ def test_three_bodies_and_overflowing_summit_counts_are_refused():
         warnings.simplefilter("ignore")
         big = PhysicalContact("Au", Surface("2nm", "1um", "1e12/m^2", "1e290m^2")).load_curve([1e-3])
     assert np.all(np.isfinite([big.F[0], big.area[0], big.contacts[0]]))
+
+
+def test_groups_out_of_range_name_the_surface_values_they_come_from():
+    """A review: Surface(sigma_s=1e-320) was refused as 'beta must be > 0', a name the user never gave."""
+    with pytest.raises(ValueError, match=r"beta must be > 0 .*; from sigma_s = 9\.99989e-321 m, R = 1e-06 m, b = "):
+        PhysicalContact("Au", Surface(sigma_s=1e-320, R=1e-6, eta=1e12, area=1e-6)).load_curve([1e-3])

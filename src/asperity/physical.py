@@ -303,8 +303,13 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
         kwargs = {} if self.friction is None else {"friction": self.friction}
         if LAWS[self.law].plastic:
             kwargs["law"] = self._law_spec
-        return Model(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b,
-                     heights=self.heights, interaction=self.interaction, **kwargs)
+        try:
+            return Model(self.alpha, self.beta, self.gamma, nu=self.nu, h_over_b=self.h_over_b,
+                         heights=self.heights, interaction=self.interaction, **kwargs)
+        except ValueError as err:  # name what the user gave, not only the groups made of it
+            s = self.surface
+            raise ValueError(f"{err}; from sigma_s = {s.sigma_s:g} m, R = {s.R:g} m, b = {self.b:g} m (alpha = "
+                             "(sigma_s/R)^(1/2), beta = (R sigma_s)^(1/2)/b, Eq 7)") from None
 
     # -- curves -------------------------------------------------------------------------
     def separation_curve(self, d) -> PhysicalCurve:
