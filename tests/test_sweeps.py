@@ -232,6 +232,13 @@ def test_bad_points_file(tmp_path):
         asperity.sweep(points=str(path), P=[1.0], scheduler="serial")
     with pytest.raises(ValueError, match="cannot read"):
         asperity.sweep(points=str(tmp_path / "none.csv"), P=[1.0], scheduler="serial")
+    # a review: a doubled header name read as 'a sweep needs beta'; 'points: points:' in messages
+    path.write_text("alpha,alpha\n0.01,0.02\n")
+    with pytest.raises(ValueError, match=r"^points: '.*p\.csv' names alpha twice in its header$"):
+        asperity.sweep(points=str(path), P=[1.0], scheduler="serial")
+    path.write_bytes(b"\xcd\xff\x00garbage")
+    with pytest.raises(ValueError, match=r"^points: cannot read '.*p\.csv': 'utf-8' codec"):
+        asperity.sweep(points=str(path), P=[1.0], scheduler="serial")
 
 
 def test_without_xarray_the_hint_names_the_extra(monkeypatch):

@@ -91,6 +91,7 @@ def test_resume_and_refusal(capsys, tmp_path):
     (["--alpha", "-0.01", "--beta", "1000", "--P", "1"], "alpha must satisfy"),
     (["--beta", "1000", "--P", "1"], "needs alpha"),
     (["--points", "nowhere.csv", "--P", "1"], "no such file"),
+    (["--points", ".", "--P", "1"], "is a directory, not a CSV file"),
     (["--material", "Au,", "--P", "1"], "empty name"),
     (["--alpha", "0.01", "--beta", "1000", "--P", "1", "--chunk-sets", "0"], "chunk_sets"),
     (["--alpha", "1e-3:0.1:2000", "--beta", "1:1e4:2000", "--gamma", "1e-5:1e-2:2000", "--P", "1"],
@@ -134,3 +135,11 @@ def test_an_existing_directory_that_is_no_sweep_is_named(capsys, tmp_path):
     code, _, err = run(capsys, "sweep", "--alpha", "0.01", "--beta", "1000", "--P", "1", "--out",
                        str(tmp_path / "map.zarr"), "--scheduler", "serial")
     assert one_line_error(code, err, "map.zarr is not a sweep store"), err
+
+
+def test_a_binary_points_file_is_one_line_naming_it(capsys, tmp_path):
+    """A review: "'utf-8' codec can't decode byte 0xcd", naming neither the option nor the file."""
+    path = tmp_path / "points.csv"
+    path.write_bytes(b"\xcd\xff\x00garbage")
+    code, _, err = run(capsys, "sweep", "--points", str(path), "--P", "1", "--out", str(tmp_path / "x.nc"))
+    assert code == 2 and err.count("\n") == 1 and f"--points {str(path)!r}: cannot read it as text" in err, err

@@ -137,9 +137,13 @@ def sweep_arguments(args) -> dict:
         import os
 
         if not os.path.isfile(args.points):
-            raise UsageError(f"--points: no such file {args.points!r}")
-        with open(args.points) as fh:
-            header = fh.readline()
+            what = "is a directory, not a CSV file" if os.path.isdir(args.points) else "no such file"
+            raise UsageError(f"--points {args.points!r}: {what}")
+        try:
+            with open(args.points, encoding="utf-8") as fh:
+                header = fh.readline()
+        except (OSError, UnicodeDecodeError) as err:
+            raise UsageError(f"--points {args.points!r}: cannot read it as text ({err})") from None
         physical = physical or "material" in header.split(",")
     kwargs.update(_axis(args, physical))
     kwargs.update(out=args.out, resume=args.resume, scheduler=args.scheduler)

@@ -250,7 +250,7 @@ def make_spec(parameters: dict, *, points=None, P=None, d=None, chunk_sets=None)
         try:
             point_cols = read_points(points)
         except (TypeError, ValueError) as err:
-            raise type(err)(f"points: {err}") from None
+            raise type(err)(str(err) if str(err).startswith("points") else f"points: {err}") from None
     else:
         raise TypeError(f"points must be a dict of parameter -> values or the path of a CSV file, got "
                         f"{type(points).__name__}")
@@ -317,13 +317,16 @@ def read_points(path: str) -> dict[str, np.ndarray]:
 
     path = check_path(path, "path")
     try:
-        with open(path, newline="") as fh:
+        with open(path, newline="", encoding="utf-8") as fh:
             rows = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
     except (OSError, UnicodeDecodeError) as err:
         raise ValueError(f"points: cannot read {path!r}: {err}") from None
     if len(rows) < 2:
         raise ValueError(f"points: {path!r} needs a header of parameter names and at least one row")
     header = [h.strip() for h in rows[0]]
+    twice = sorted({h for h in header if header.count(h) > 1})
+    if twice:
+        raise ValueError(f"points: {path!r} names {', '.join(twice)} twice in its header")
     cols: dict[str, list] = {h: [] for h in header}
     for i, row in enumerate(rows[1:], start=2):
         if len(row) != len(header):
