@@ -230,3 +230,17 @@ def test_the_elastic_law_in_any_case_takes_the_plastic_threshold(capsys):
                "--load", "1mN", "--format", "csv"]
     assert main(["load", *contact, "--law", "Elastic", "--plastic-threshold", "0.5"]) == 0
     capsys.readouterr()
+
+
+@pytest.mark.parametrize("text", ["1:10:1", "1uN:10uN:1"])
+def test_a_range_of_one_point_that_would_drop_its_stop_is_refused(text):
+    """A review: --load 1uN:10uN:1 computed 1 uN alone, the stop silently ignored."""
+    with pytest.raises(UsageError, match="a range of one point would drop its stop"):
+        parse_list(text, log=True, name="--P") if "u" not in text else quantity_list(text, "N", log=True, name="--load")
+    assert list(parse_list("5:5:1", log=True, name="--P")) == [5.0]
+
+
+@pytest.mark.parametrize("count", ["1_0", "\u0661\u0660", "2.0", "-3"])
+def test_a_range_count_is_an_ascii_integer(count):
+    with pytest.raises(UsageError, match="count in start:stop:count must be a positive integer"):
+        parse_list(f"1:10:{count}", log=True, name="--P")

@@ -57,14 +57,14 @@ def _range_parts(text: str, name: str) -> tuple[str, str, int]:
     parts = text.split(":")
     if len(parts) != 3:
         raise UsageError(f"{name}: expected a range 'start:stop:count' (three fields), got {_show(text)}")
-    try:
-        count = int(parts[2])
-    except ValueError:
-        count = None
+    count = int(parts[2]) if parts[2].strip().isascii() and parts[2].strip().isdigit() else None
     if count is None or count < 1:
         raise UsageError(f"{name}: count in start:stop:count must be a positive integer, got {parts[2]!r}")
     if count > MAX_POINTS:
         raise _too_many(name, count)
+    if count == 1 and parts[0].strip() != parts[1].strip():  # a review: the stop was silently dropped
+        raise UsageError(f"{name}: a range of one point would drop its stop ({_show(text)}): give count >= 2, "
+                         "or the one value alone")
     return parts[0], parts[1], count
 
 
