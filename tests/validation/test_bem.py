@@ -90,7 +90,7 @@ def test_bad_grid(grid):
         bem_contact(topo, [1e-3], E_star=E_STAR, grid=grid)
 
 
-@pytest.mark.parametrize("P", [[0.0], [-1e-3], [math.nan], [math.inf], [], np.ones(1001), "x", [True]])
+@pytest.mark.parametrize("P", [[0.0], [-1e-3], [math.nan], [math.inf], [], np.ones(1001), "x", [True], [[1e-3]]])
 def test_bad_loads(P):
     topo = synthetic_surface("gaussian", 2e-6, 32, short_cutoff=2e-6 / 8)
     with pytest.raises((ValueError, TypeError), match="load"):

@@ -180,7 +180,10 @@ P_BAR_RANGE = (1e-15, 1.0)
 
 
 def _check_loads(P) -> np.ndarray:
-    P = as_float_array(P, "P (load)").ravel()
+    P = as_float_array(P, "P (load)")
+    if P.ndim > 1:  # a review: [[1e-6]] was flattened without a word
+        raise ValueError(f"P (load) must be one load or a 1-D list of loads, got an array of shape {P.shape}")
+    P = P.ravel()
     if P.size == 0 or P.size > MAX_LOADS:
         raise ValueError(f"P (load) must hold 1 to {MAX_LOADS} loads, got {P.size}")
     if np.any(P <= 0):
