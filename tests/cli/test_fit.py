@@ -168,6 +168,7 @@ CASES = {
     "inconsistent units": ("P,friction [nN]\n1,2\n2,3\n3,4\n", [], "inconsistent units"),
     "unit against flag": ("load [mN],friction [nN]\n1,2\n2,3\n3,4\n", ["--load-unit", "uN"], "inconsistent units"),
     "no unit": ("load,friction [nN]\n1,2\n2,3\n3,4\n", [], "has no unit"),
+    "space separated": ("load [nN] friction [nN]\n1 2\n2 3\n3 4\n", [], "is one column: separate the columns"),
     "digit separator": ("load [nN],friction [nN]\n1_0,2\n2,3\n3,4\n", [], "'1_0' is not a number"),
     "underflow": ("load [nN],friction [nN]\n1e-400,2\n2,3\n3,4\n", [], "smaller than the smallest double"),
     "fixed and varied": ("P,F\n1,2\n2,3\n3,4\n", ["--vary", "mu0", "--fix", "mu0=1"], "both fixed and varied"),

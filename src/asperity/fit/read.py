@@ -148,6 +148,9 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
     delimiter = next((d for d in (",", "\t", ";") if d in header), ",")
     rows = list(csv.reader([line for _, line in lines], delimiter=delimiter))
     headers = [h.strip() for h in rows[0]]
+    if len(headers) == 1 and len(rows) > 1 and rows[1] and len(rows[1][0].split()) > 1:  # space-separated
+        raise ValueError(f"{name}: the header {headers[0]!r} is one column: separate the columns with ',', ';' "
+                         "or a tab (spaces cannot, since a name may hold them: 'load [nN]')")
     if len(set(headers)) != len(headers):
         dup = next(h for h in headers if headers.count(h) > 1)
         raise ValueError(f"{name}: column {dup!r} appears twice in the header")
