@@ -290,8 +290,8 @@ SKIP = {
              "PhysicalContact.cycle are fuzzed)"
        for name in ("asperity.cycle_search.first_zero", "asperity.cycle_search.bracketed_roots",
                     "asperity.instrument.spring_path", "asperity.instrument.jump_energy",
-                    "asperity.cycle_integrals.ApproachLaw", "asperity.cycle_integrals.LoopBand",
-                    "asperity.cycle_integrals.law_columns", "asperity.cycle_integrals.check_u_in",
+                    "asperity.cycle_band.ApproachLaw", "asperity.cycle_band.LoopBand",
+                    "asperity.cycle_band.law_columns", "asperity.cycle_band.check_u_in",
                     "asperity.cycle_run.compute_cycle", "asperity.cycle_run.compute_preload_curve",
                     "asperity.cycle_search.closest_approach", "asperity.cycle_search.retract_pull_off",
                     "asperity.instrument.base_displacement")},

@@ -22,7 +22,7 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.jackson_green", "asperity.jackson_green_fits", "asperity.jackson_green_hardness",
                    "asperity.nix_gao", "asperity.elastic_plastic", "asperity.jackson_green_law",
                    "asperity.plasticity", "asperity.cycle",
-                   "asperity.cycle_run", "asperity.cycle_integrals", "asperity.instrument", "asperity.physical_cycle",
+                   "asperity.cycle_run", "asperity.cycle_band", "asperity.instrument", "asperity.physical_cycle",
                    "asperity.sweeps.run",
                    "asperity.maugis_dugdale_load", "asperity.cos", "asperity.amontons",
                    "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare",

@@ -37,7 +37,7 @@ LAYERS = [
     ("integrals", {"asperity_law", "tabulation", "height_sums", "multi_asperity", "elastic_plastic",
                    "jackson_green_law"}),
     ("curves", {"curves", "curve_result", "load_control", "branch_inversion", "pull_off_search", "cycle",
-                "cycle_integrals",
+                "cycle_integrals", "cycle_band",
                 "cycle_search", "cycle_run",
                 "cycle_result", "instrument", "interaction"}),
     ("physical", {"materials", "bodies", "physical", "physical_description", "physical_results", "surface", "regimes",

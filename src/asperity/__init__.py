@@ -91,6 +91,7 @@ _SUBMODULES = (
     "curve_result",
     "curves",
     "cycle",
+    "cycle_band",
     "dmt",
     "elastic_plastic",
     "explorer",
