@@ -345,6 +345,7 @@ SKIP = {
     "asperity.fit.engine.resolve_weights": "resolves the weights option (the fits are fuzzed)",
     "asperity.validation.progress.progress_bar": "writes a progress report; its loads come from bem_contact",
     "asperity.validation.progress.stage": "writes one progress line; its text comes from validate_surface",
+    "asperity.validation.bem.check_loads": "the loads check of bem_contact and validate_surface (both fuzzed)",
     # The explorer's page: Bokeh objects driven by the page's State (tests/explorer, in a browser).
     **{name: "a part of the explorer's Bokeh page, driven by a validated State (tests/explorer)"
        for name in ("asperity.explorer.app.ExplorerSession", "asperity.explorer.app.PageState",

@@ -49,7 +49,8 @@ from .._validation import as_float_array, check_bool, check_mean_pressure, check
 from .progress import progress_bar
 from .spots import count_spots
 
-__all__ = ["BemCurve", "bem_contact", "subsample", "MIN_GRID", "MAX_LOADS", "DEFAULT_TOLERANCE", "P_BAR_RANGE"]
+__all__ = ["BemCurve", "bem_contact", "check_loads", "subsample", "MIN_GRID", "MAX_LOADS", "DEFAULT_TOLERANCE",
+           "P_BAR_RANGE"]
 
 #: Fewest grid points along each axis for a boundary-element solve (after ``grid``).
 MIN_GRID = 16
@@ -179,7 +180,8 @@ def subsample(topography, grid):
 P_BAR_RANGE = (1e-15, 1.0)
 
 
-def _check_loads(P) -> np.ndarray:
+def check_loads(P) -> np.ndarray:
+    """The loads of a boundary-element run: 1-D, 1 to :data:`MAX_LOADS` of them, each > 0 N (ValueError naming P)."""
     P = as_float_array(P, "P (load)")
     if P.ndim > 1:  # a review: [[1e-6]] was flattened without a word
         raise ValueError(f"P (load) must be one load or a 1-D list of loads, got an array of shape {P.shape}")
@@ -245,7 +247,7 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
     Polonsky & Keer, Wear 231 (1999) 206; Stanley & Kato, J. Tribol. 119 (1997) 481;
     Johnson (1985), §3.2; Hockney (1970).
     """
-    P = _check_loads(P)
+    P = check_loads(P)
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
     progress = check_bool(progress, "progress")
     tolerance = check_scalar_positive(tolerance, "tolerance", "")
