@@ -180,3 +180,23 @@ def test_strict_float_reads_decimals_only():
     for bad in ("1_0", "\u0661", "0x10", "1e-400", "", "1 2", "infinit"):
         with pytest.raises(ValueError):
             strict_float(bad)
+
+
+@pytest.mark.parametrize("text, unit, value", [("2 nm\u00b2", "m^2", 2e-18), ("1/\u00b5m\u00b2", "1/m^2", 1e12),
+                                                ("5 \u00b5m\u207b\u00b2", "1/m^2", 5e12), ("1 m\u00b3", "m^3", 1.0)])
+def test_superscript_units_are_read(text, unit, value):
+    """A second review: the check for other scripts' digits refused superscripts ('nm²')."""
+    assert parse_quantity(text, unit, "x") == pytest.approx(value, rel=1e-15)
+
+
+@pytest.mark.parametrize("text, unit, needle", [
+    ("1 nN\u00a02", "N", "side by side"),       # a no-break space hid the juxtaposition
+    ("1 (nm) 2", "m", "side by side"), ("(1) 2 nm", "m", "side by side"), ("1 nm (2)", "m", "side by side"),
+    ("2 1/2 nm", "m", "side by side"),          # pint: 1 nm; a user may mean 2.5
+    ("1e-9 N 1/2", "N", "side by side"),
+    ("1e-320 nm", "m", "below the smallest double in m"), ("(1e-400) nm", "m", "smaller than the smallest double"),
+    ("nanometer", "m", "has no number"), ("1 \u00b10.1 nm", "m", "one number with its unit"),
+])
+def test_second_review_misreadings_are_refused(text, unit, needle):
+    with pytest.raises(ValueError, match=re.escape(needle)):
+        parse_quantity(text, unit, "x")

@@ -18,6 +18,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+import unicodedata
 
 import numpy as np
 
@@ -65,7 +66,10 @@ def _convert(quantity, unit: str, name: str):
         raise ValueError(f"{name} must have units compatible with {_unit_label(unit)}, got "
                          f"{quantity!s} ({type(err).__name__}: {err})") from None
     magnitude = converted.magnitude
-    return float(magnitude) if np.ndim(magnitude) == 0 else np.asarray(magnitude, dtype=float)
+    try:
+        return float(magnitude) if np.ndim(magnitude) == 0 else np.asarray(magnitude, dtype=float)
+    except (TypeError, ValueError):  # e.g. '1 ±0.1 nm', a value with an uncertainty
+        raise ValueError(f"{name} must be one number with its unit, got {quantity!s}") from None
 
 
 def to_si(value, unit: str, name: str):
@@ -164,7 +168,7 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
     _check_labels(unit, name)
     if not isinstance(text, str):
         raise ValueError(f"{name} must be a string such as '2nm', got {text!r}")
-    stripped = text.strip()
+    stripped = " ".join(text.split())  # any Unicode space (a no-break space too) is one space
     number = _plain_number(stripped, name, text)
     if number is not None:
         if require_unit and unit:
@@ -183,6 +187,9 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
         number = _plain_number(split.group(1), name, text)
         scaled = _decimal_scaled(number, split.group(2), unit, name, registry)
         if scaled is not None:
+            if scaled == 0.0 and number != 0.0:  # '1e-320 nm': below the smallest double in metres
+                raise ValueError(f"{name} = {text!r} is {number:g} {split.group(2)}, below the smallest double in "
+                                 f"{_unit_label(unit)} (about 5e-324): it would be read as 0")
             return scaled
     try:
         quantity = registry.parse_expression(stripped)
@@ -197,7 +204,10 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
 
 #: Two terms side by side with only spaces between, the second a number (pint would multiply
 #: them: '1 nN 2' is 2 nN, '2 1 nN' too); '5 1/um^2' (five per square micrometre) is the exception.
-_JUXTAPOSED = re.compile(r"[A-Za-z\u00b5\u03bc\u00c5\u212b\d.]\s+(?!1\s*/)(?:\d|\.\d)", re.ASCII)
+_JUXTAPOSED = re.compile(r"[A-Za-z\u00b5\u03bc\u00c5\u212b\d.)]\s+(?!1\s*/\s*[A-Za-z\u00b5\u03bc\u00c5\u212b(])"
+                         r"(?:\d|\.\d|\()", re.ASCII)
+#: The number literals of a text (their exponents included).
+_NUMBER_TOKEN = re.compile(r"(?<![A-Za-z_])(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
 
 
 def _check_one_number(stripped: str, text: str, name: str) -> None:
@@ -208,13 +218,17 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
                 else "")
         raise ValueError(f"{name} = {text!r}: one number with its unit, '.' the decimal point; ',' and ';' are "
                          f"not part of a quantity{mean}")
-    if any(ch.isdigit() and not ch.isascii() for ch in stripped) or re.search(r"\d_\d", stripped):
+    # digits of other scripts (not superscripts: 'nm²' is a unit) and '1_0' (Python's 10)
+    if any(not ch.isascii() and unicodedata.decimal(ch, None) is not None for ch in stripped) or \
+            re.search(r"\d_\d", stripped):
         raise ValueError(f"{name} = {text!r}: write the number with the digits 0-9 (no '_' between them)")
-    if not re.match(r"[+-]?(?:\d|\.\d|\(|nan|inf)", stripped, re.ASCII | re.IGNORECASE):
+    if not re.match(r"[+-]?(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z]))", stripped, re.ASCII | re.IGNORECASE):
         raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {stripped or 'nm'}')")
     if _JUXTAPOSED.search(stripped):
         raise ValueError(f"{name} = {text!r}: one number with its unit (e.g. '2nm'), or an expression with "
                          "explicit operators ('3 m + 2 m'); numbers set side by side are not read")
+    for token in _NUMBER_TOKEN.findall(stripped):  # each literal: none may underflow to 0
+        _plain_number(token, name, text)
 
 
 #: A number followed by a unit that starts with a letter, '/' or '1/' ('1/um^2', '5 1/um^2'; '*', '^' go to pint).
