@@ -342,6 +342,11 @@ def test_a_value_at_a_bound_is_the_bound():
         res = fit_friction_load(friction_load_data(P, 0.3 * (P + 4e-9), physical=True), "amontons",
                                 bounds={"P0_N": (0, hi)}, start={"P0_N": hi / 2}, ci="wald")
         assert res.values["P0_N"] == hi and res.parameters["P0_N"].note == "at its upper bound"
+    # a log-scaled parameter: 10**log10(0.2) is 0.20000000000000004, outside the bound (a second review)
+    P = np.linspace(1.0, 50.0, 15)
+    for bounds, value in (((0.1, 0.2), 0.2), ((0.31, 0.5), 0.31)):
+        res = fit_friction_load(friction_load_data(P, 0.3 * (P + 4.0)), "amontons", bounds={"mu0": bounds})
+        assert res.values["mu0"] == value and res.parameters["mu0"].value == value
 
 
 @pytest.mark.parametrize("bounds, inside", [((0.0, 0.25), (0.0, 0.25)), ((0.5, None), (0.5, np.inf)),

@@ -255,7 +255,9 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
         scale_x = max(abs(xi), abs(math.log10(start.value) if start.log else start.value * start.per_unit), 1e-300)
         for edge, side in ((lo, "lower"), (hi, "upper")):
             if math.isfinite(edge) and abs(xi - edge) <= 1e-6 * max(scale_x, abs(edge)) and n not in undetermined:
-                at_bound[n] = (side, by_fitted[v].linear(edge))
+                p = by_fitted[v]  # the user's bound itself (10**log10(0.2) is 0.20000000000000004)
+                target = p.lo if side == "lower" else p.hi
+                at_bound[n] = (side, target if math.isfinite(target) and (not p.log or target > 0) else p.linear(edge))
     for n, (side, edge) in at_bound.items():
         warnings.append(f"{n} ended at its {side} bound {edge:g}: the data push it beyond the allowed range; "
                         "no standard error or interval (widen the bound, fix it, or question the model)")
