@@ -207,3 +207,16 @@ def test_bad_arguments_of_the_sample_files_and_the_weibull_skewness_are_named(tm
         with pytest.raises((TypeError, ValueError), match=r"^c \(Weibull shape\)"):
             weibull_skewness(bad)
     assert weibull_skewness(SHAPE_RANGE[1]) == pytest.approx(-1.1395, abs=1e-3)  # near the limit -1.1395
+
+
+@pytest.mark.parametrize("first", ["1_0e-9", "5e-400"])
+def test_a_bad_number_on_the_first_line_is_no_header(tmp_path, first):
+    """A second review: a first line strict parsing refuses was skipped as a header, silently."""
+    from asperity.heights.samples import read_samples
+
+    path = tmp_path / "summits.txt"
+    path.write_text(first + "\n" + "\n".join(str(float(x)) for x in np.linspace(-2.0, 2.0, 50)) + "\n")
+    with pytest.raises(ValueError, match="line 1: expected one number per line"):
+        read_samples(str(path))
+    path.write_text("z_m\n" + "\n".join(str(float(x)) for x in np.linspace(-2.0, 2.0, 50)) + "\n")
+    assert read_samples(str(path)).size == 50

@@ -9,6 +9,7 @@ data, NaN, infinity) is an error naming the file and the line; nothing is repair
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -75,7 +76,9 @@ def read_samples(path) -> np.ndarray:
         except ValueError:
             numeric = all(_is_number(cell) for cell in text.replace(";", ",").split(",")) or \
                 all(_is_number(cell) for cell in text.split())
-            if first and not numeric:  # a header (a row of numbers is not one: several columns)
+            # text made of number characters ('1_0e-9', '5e-400') is a bad number, not a header
+            looks_numeric = re.fullmatch(r"[\d\s.eE+\-_,;]+", text) is not None
+            if first and not numeric and not looks_numeric:  # a header (a row of numbers is not one)
                 first = False
                 continue
             raise ValueError(f"{name}: line {number}: expected one number per line, "
