@@ -238,6 +238,17 @@ def test_a_range_of_one_point_that_would_drop_its_stop_is_refused(text):
     with pytest.raises(UsageError, match="a range of one point would drop its stop"):
         parse_list(text, log=True, name="--P") if "u" not in text else quantity_list(text, "N", log=True, name="--load")
     assert list(parse_list("5:5:1", log=True, name="--P")) == [5.0]
+    assert list(parse_list("1:1.0:1", log=True, name="--P")) == [1.0]  # the same value, written twice
+    assert list(quantity_list("1uN:1 uN:1", "N", log=True, name="--load")) == [1e-6]
+
+
+@pytest.mark.parametrize("value", ["1_0", "\u0661\u0660", "2.0", ""])
+def test_integer_options_take_ascii_integers(value):
+    from asperity.cli._args import integer
+
+    with pytest.raises(ValueError):
+        integer(value)
+    assert integer(" 12 ") == 12 and integer.__name__ == "int"
 
 
 @pytest.mark.parametrize("count", ["1_0", "\u0661\u0660", "2.0", "-3"])

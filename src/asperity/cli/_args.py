@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 
 from .._numbers import strict_float
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS, PLASTIC_COLUMNS
@@ -40,6 +41,7 @@ from ._lists import (
 
 __all__ = [
     "decimal",
+    "integer",
     "MAX_POINTS",
     "UsageError",
     "parse_list",
@@ -120,6 +122,18 @@ def decimal(text: str) -> float:
 
 
 decimal.__name__ = "float"
+
+
+def integer(text: str) -> int:
+    """An argparse type: an integer written with the ASCII digits (``int`` also reads '1_0' and
+    other scripts' digits); named ``int`` so argparse says "invalid int value"."""
+    stripped = text.strip()
+    if not re.fullmatch(r"[+-]?[0-9]+", stripped):
+        raise ValueError(f"invalid integer {text!r}")
+    return int(stripped)
+
+
+integer.__name__ = "int"
 
 
 def output_file(text: str) -> str:

@@ -62,9 +62,6 @@ def _range_parts(text: str, name: str) -> tuple[str, str, int]:
         raise UsageError(f"{name}: count in start:stop:count must be a positive integer, got {parts[2]!r}")
     if count > MAX_POINTS:
         raise _too_many(name, count)
-    if count == 1 and parts[0].strip() != parts[1].strip():  # a review: the stop was silently dropped
-        raise UsageError(f"{name}: a range of one point would drop its stop ({_show(text)}): give count >= 2, "
-                         "or the one value alone")
     return parts[0], parts[1], count
 
 
@@ -76,6 +73,9 @@ def _spaced(start: float, stop: float, count: int, *, log: bool, name: str, text
 
     if not (math.isfinite(start) and math.isfinite(stop)):
         raise UsageError(f"{name}: values must be finite, got {_show(text)}")
+    if count == 1 and start != stop:  # a review: the stop was silently dropped
+        raise UsageError(f"{name}: a range of one point would drop its stop ({_show(text)}): give count >= 2, "
+                         "or the one value alone")
     if log:
         if start <= 0 or stop <= 0:
             raise UsageError(f"{name}: a log-spaced range start:stop:count needs start, "

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ._args import add_body_arguments, add_output_arguments, add_surface_arguments, decimal
+from ._args import add_body_arguments, add_output_arguments, add_surface_arguments, decimal, integer
 
 NAME = "bem"
 #: The library's interaction names and boundary-element tolerance (asperity.interaction.INTERACTIONS,
@@ -36,7 +36,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--load", required=True, metavar="LIST",
                         help="total forces on the scanned area with a force unit, e.g. 1mN:1N:8 (spaced "
                              "logarithmically) or 1mN,5mN")
-    parser.add_argument("--grid", type=int, metavar="N",
+    parser.add_argument("--grid", type=integer, metavar="N",
                         help="average the scan down to at most N points per axis first (e.g. 512)")
     parser.add_argument("--periodic", action=argparse.BooleanOptionalAction, default=None,
                         help="periodic or free boundaries (default: as the file says; measured scans are free)")
@@ -49,7 +49,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="boundary-element convergence: penetration below this fraction of the rms height "
                              "and tensile pixel forces below it times the mean pixel force "
                              f"(default {DEFAULT_TOLERANCE:g})")
-    parser.add_argument("--maxiter", type=int, default=10000,
+    parser.add_argument("--maxiter", type=integer, default=10000,
                         help="boundary-element iterations per load at most (default 10000)")
     parser.add_argument("--quiet", action="store_true", help="no progress report on standard error")
     parser.add_argument("--no-comments", action="store_true",

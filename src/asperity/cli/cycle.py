@@ -12,6 +12,7 @@ from ._args import (
     add_contact_arguments,
     add_model_arguments,
     add_output_arguments,
+    integer,
     parse_list,
     quantity,
     quantity_list,
@@ -58,7 +59,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     g.add_argument("--d", metavar="LIST", help="evaluate both branches at these separations instead of the path: "
                                                "'a,b,c' or 'start:stop:count' (lengths with --material, e.g. "
                                                "0nm:10nm:21); displacement control only")
-    g.add_argument("--points", metavar="N", type=int, default=200, help="points per branch on the path (default 200)")
+    g.add_argument("--points", metavar="N", type=integer, default=200,
+                   help="points per branch on the path (default 200)")
     add_output_arguments(parser)
 
 

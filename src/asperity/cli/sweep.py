@@ -13,7 +13,7 @@ import argparse
 import os
 
 from ..quantities import MODEL_PARAMETERS, PHYSICAL_PARAMETERS
-from ._args import UsageError, output_file, parse_list, quantity_list
+from ._args import UsageError, integer, output_file, parse_list, quantity_list
 
 NAME = "sweep"
 HELP = "curves and pull-off over a grid of parameter sets (NetCDF/Zarr; Dask)"
@@ -79,7 +79,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     s.add_argument("--scheduler", metavar="ADDRESS", default=None,
                    help="Dask scheduler address of an existing cluster, or 'local' (one worker per core; the "
                         "default when Dask is installed) or 'serial'")
-    s.add_argument("--chunk-sets", dest="chunk_sets", metavar="N", type=int, default=None,
+    s.add_argument("--chunk-sets", dest="chunk_sets", metavar="N", type=integer, default=None,
                    help="parameter sets per task (default: a 32nd of the sets, within 32..256)")
     s.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
                    help="progress bar with ETA on standard error (default: when it is a terminal)")
