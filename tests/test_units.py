@@ -149,6 +149,8 @@ def test_quantities_are_converted_where_units_are_taken_and_refused_where_not():
             md_normal_force(1e-9, R=1e-6, w=0.1, E_star=100e9, lam=1.0)
         data = friction_load_data(np.array([1.0, 2, 3]) * u.nN, np.array([2.0, 3, 4]) * u.nN, physical=True)
         np.testing.assert_allclose(data.y, [2e-9, 3e-9, 4e-9], rtol=1e-15)
+        data = friction_load_data([1 * u.nN, 2 * u.nN, "3nN"], [2 * u.nN, 3 * u.nN, 4 * u.nN], physical=True)
+        np.testing.assert_allclose(data.x, [1e-9, 2e-9, 3e-9], rtol=1e-15)
         # a dimensionless quantity is its number
         loads = np.array([1.0, 2.0]) * u.dimensionless
         np.testing.assert_array_equal(asperity.Model(0.05, 1000, 1e-3).load_curve(loads).P, [1.0, 2.0])

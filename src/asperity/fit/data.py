@@ -153,7 +153,8 @@ _SI_UNITS = {"P": "N", "F": "N", "force": "N", "d": "m", "mu": ""}
 
 
 def _vector(value, name, physical=False) -> np.ndarray:
-    if is_quantity(value):  # a review: nN quantities lost their unit (values 1e9 too large)
+    listed = isinstance(value, list | tuple) and any(is_quantity(v) or isinstance(v, str) for v in value)
+    if is_quantity(value) or listed:  # a review: nN quantities lost their unit (values 1e9 too large)
         base = name[:-4] if name.endswith("_err") else name
         if physical is not True:
             raise ValueError(f"{name} is a quantity ({value!r}) but the data are dimensionless: pass "
