@@ -25,6 +25,9 @@ from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_
 
 __all__ = ["ApproachLaw", "LoopBand", "law_columns", "check_u_in"]
 
+#: Families whose density is (z - edge)^p times an analytic function at a support edge.
+_ANALYTIC_AT_EDGE = frozenset({"exponential", "weibull", "pearson3"})
+
 
 def law_columns(law: ContactLaw, u):
     r"""The four integrands of a law at penetrations ``u``: (1, P, F, a^2), shape (u.size, 4).
@@ -263,14 +266,18 @@ class LoopBand:
         k = 4.0 / (p + 1.0) if math.isfinite(p) else 1.0
         points = [a, b, *self.edges[(self.edges > a) & (self.edges < b)]]
         grow = 2.0 ** np.arange(0, 40)
-        if lo_edge:  # towards the edge at a: pieces as wide as their distance from it
+        # a density like (z - edge)^p is not analytic at its edge unless p is an integer (and the
+        # family's other factor analytic: exponential, Weibull, Pearson III; not Johnson S_B):
+        # pieces refined towards it, each as wide as its distance from it
+        refine = not (float(p).is_integer() and h.name in _ANALYTIC_AT_EDGE)
+        if refine and lo_edge:
             points += list(a + (b - a) / grow[1:31])
-        elif math.isfinite(z_lo):  # an edge just below a, at distance delta
+        elif refine and math.isfinite(z_lo):  # an edge just below a, at distance delta
             delta = a - (z_lo - d)
             points += list(a + delta * (grow[1:] - 1.0))
-        if hi_edge:
+        if refine and hi_edge:
             points += list(b - (b - a) / grow[1:31])
-        elif math.isfinite(z_hi):
+        elif refine and math.isfinite(z_hi):
             delta = (z_hi - d) - b
             points += list(b - delta * (grow[1:] - 1.0))
         points = np.unique(np.clip(np.array(points), a, b))
