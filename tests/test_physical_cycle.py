@@ -174,3 +174,20 @@ def test_a_plastic_cycle_says_it_has_no_unloading_and_counts_the_yielded():
         expected = plastic_fraction(branch.d / contact.surface.sigma_s, contact.u_c, contact.heights) * contact.N
         np.testing.assert_allclose(branch.plastic, expected, rtol=1e-12)
     assert np.max(c.approach.plastic) > 0 and c.energy_J == 0.0
+
+
+def test_a_cycles_warnings_point_at_the_users_line():
+    """A review: through PhysicalContact.cycle the PlasticityWarning pointed at asperity's own
+    wrapper; every warning of a cycle now names the caller's file, whichever route."""
+    import warnings
+
+    from asperity.physical_cycle import physical_cycle
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
+    plastic = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12), plasticity="jackson-green", adhesion=False)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        contact.cycle(preload="3000N", n=10)  # yields, and more than 10 % of the area
+        physical_cycle(contact, preload="3000N", n=10)
+        plastic.cycle(preload="5uN", n=12)  # no unloading
+    assert len(caught) == 5 and {w.filename for w in caught} == {__file__}, [(w.filename, w.message) for w in caught]

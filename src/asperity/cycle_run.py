@@ -21,7 +21,7 @@ import warnings
 import numpy as np
 
 from ._validation import as_float_array, check_1d, scalar
-from ._warnings import AsperityWarning
+from ._warnings import AsperityWarning, frames_to_user
 from .cycle_integrals import CycleIntegrals, chebyshev_points
 from .cycle_result import BranchCurve, CycleResult, PreloadCurve
 from .cycle_search import closest_approach, first_zero, retract_pull_off
@@ -197,7 +197,7 @@ def compute_cycle(ci: CycleIntegrals, *, d_min=None, preload=None, d_max=None, d
         warnings.warn(f"the {name} law has no unloading: the retraction retraces the approach as if the "
                       f"asperities had not yielded (up to {100 * np.max(approach.plastic):.3g} % of all the asperities "
                       f"past the critical interference), so the loop dissipates no plastic work; the energy and "
-                      f"pull-off are those of a reversible contact", AsperityWarning, stacklevel=3)
+                      f"pull-off are those of a reversible contact", AsperityWarning, stacklevel=1 + frames_to_user())
     return CycleResult(
         approach=approach, retract=retract, pull_off=po, energy=float(-loop[1] + lost),
         loop_energy=ci.loop_energy(), loop_fraction=float(ci.loop_fraction(d_min, d_max)), jump_energy=float(lost),

@@ -32,6 +32,7 @@ import numpy as np
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._json import json_safe
 from ._validation import as_float_array, check_1d, check_finite_result, check_scalar_positive, scalar
+from ._warnings import frames_to_user
 from .cycle import CycleResult, PreloadCurve, compute_cycle, compute_preload_curve
 from .cycle_integrals import CycleIntegrals
 from .cycle_run import MAX_POINTS
@@ -314,8 +315,8 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     energy = fs * sigma
     approach, retract = _branch(contact, res.approach), _branch(contact, res.retract)
     if res.approach.plastic is None:  # the elastic law: checked as every curve (the closest approach decides)
-        contact.warn_if_yielding(res.approach.d, res.approach.contacts, stacklevel=3)
-    warn_area_fraction(max(approach.max_area_fraction, retract.max_area_fraction), stacklevel=2,
+        contact.warn_if_yielding(res.approach.d, res.approach.contacts, stacklevel=2 + frames_to_user())
+    warn_area_fraction(max(approach.max_area_fraction, retract.max_area_fraction), stacklevel=1 + frames_to_user(),
                        where=" during the cycle")
     jumps = tuple({"branch": j.branch, "d_base_m": j.d_base * sigma, "d_from_m": j.d_from * sigma,
                    "d_to_m": j.d_to * sigma, "P_from_N": j.P_from * fs, "P_to_N": j.P_to * fs,
