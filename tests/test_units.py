@@ -202,3 +202,18 @@ def test_superscript_units_are_read(text, unit, value):
 def test_second_review_misreadings_are_refused(text, unit, needle):
     with pytest.raises(ValueError, match=re.escape(needle)):
         parse_quantity(text, unit, "x")
+
+
+@pytest.mark.parametrize("text", ["2'5nm", "1'000 nN", "2\u00b75 nm", "1\u20132 nm", "2:5nm", "2\u00bd nm",
+                                  "1 um & 2", "3 nm#2", "2.5.3 nm", "1..2 nm", "(2)(3) nm", "1 % nm", "2(3) nm"])
+def test_characters_pint_would_drop_are_refused(text):
+    """A third review: pint drops characters it does not know and multiplies the rest ("2'5nm"
+    was 10 nm, "1'000 nN" 0 N, '1 % nm' 0.01 nm)."""
+    with pytest.raises(ValueError, match="cannot be part of a quantity|one number with its unit"):
+        parse_quantity(text, "N" if "N" in text else "m", "x")
+
+
+@pytest.mark.parametrize("text, unit, value", [("\u22125 nN", "N", -5e-9), ("- 5 nN", "N", -5e-9),
+                                                ("10 N m^\u22121", "N/m", 10.0), ("2e14 m^\u22122", "1/m^2", 2e14)])
+def test_the_typeset_minus_sign_is_a_minus(text, unit, value):
+    assert parse_quantity(text, unit, "x") == pytest.approx(value, rel=1e-15)

@@ -168,7 +168,9 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
     _check_labels(unit, name)
     if not isinstance(text, str):
         raise ValueError(f"{name} must be a string such as '2nm', got {text!r}")
-    stripped = " ".join(text.split())  # any Unicode space (a no-break space too) is one space
+    # any Unicode space (a no-break space too) is one space; the minus sign U+2212 of typeset
+    # text ('−5 nN', 'm^−1') is '-'
+    stripped = " ".join(text.split()).replace("\u2212", "-")
     number = _plain_number(stripped, name, text)
     if number is not None:
         if require_unit and unit:
@@ -206,6 +208,9 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
 #: them: '1 nN 2' is 2 nN, '2 1 nN' too); '5 1/um^2' (five per square micrometre) is the exception.
 _JUXTAPOSED = re.compile(r"[A-Za-z\u00b5\u03bc\u00c5\u212b\d.)]\s+(?!1\s*/\s*[A-Za-z\u00b5\u03bc\u00c5\u212b(])"
                          r"(?:\d|\.\d|\()", re.ASCII)
+#: Non-ASCII characters a unit may hold: micro (two code points), angstrom (two), superscripts.
+_UNIT_CHARACTERS = frozenset("\u00b5\u03bc\u00c5\u212b\u00b2\u00b3\u00b9\u2070\u2074\u2075\u2076\u2077\u2078"
+                             "\u2079\u207b")
 #: The number literals of a text (their exponents included).
 _NUMBER_TOKEN = re.compile(r"(?<![A-Za-z_])(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
 
@@ -218,12 +223,23 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
                 else "")
         raise ValueError(f"{name} = {text!r}: one number with its unit, '.' the decimal point; ',' and ';' are "
                          f"not part of a quantity{mean}")
+    # pint drops characters it does not know and multiplies what is left ("2'5nm" is 10 nm,
+    # '1 % nm' 0.01 nm): only those of numbers, units and arithmetic may reach it
+    stray = sorted({ch for ch in stripped if not (ch.isascii() and (ch.isalnum() or ch in " .+-*/^()_"))
+                    and ch not in _UNIT_CHARACTERS})
+    if stray:
+        raise ValueError(f"{name} = {text!r}: {', '.join(map(repr, stray))} cannot be part of a quantity (one "
+                         "number with its unit, e.g. '2.5nm', '1e12/m^2')")
+    if re.search(r"\d*\.\d*\.", stripped) or re.search(r"[\d.)]\s*\(", stripped):
+        raise ValueError(f"{name} = {text!r}: one number with its unit (two decimal points, or a number "
+                         "directly before '(', are not read)")
     # digits of other scripts (not superscripts: 'nm²' is a unit) and '1_0' (Python's 10)
     if any(not ch.isascii() and unicodedata.decimal(ch, None) is not None for ch in stripped) or \
             re.search(r"\d_\d", stripped):
         raise ValueError(f"{name} = {text!r}: write the number with the digits 0-9 (no '_' between them)")
-    if not re.match(r"[+-]?(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z]))", stripped, re.ASCII | re.IGNORECASE):
-        raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {stripped or 'nm'}')")
+    if not re.match(r"[+-]?\s*(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z]))", stripped, re.ASCII | re.IGNORECASE):
+        example = stripped if re.match(r"[A-Za-z\u00b5\u03bc\u00c5\u212b]", stripped) else "nm"
+        raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {example}')")
     if _JUXTAPOSED.search(stripped):
         raise ValueError(f"{name} = {text!r}: one number with its unit (e.g. '2nm'), or an expression with "
                          "explicit operators ('3 m + 2 m'); numbers set side by side are not read")
