@@ -193,7 +193,7 @@ def test_superscript_units_are_read(text, unit, value):
 
 @pytest.mark.parametrize("text, unit, needle", [
     ("1 nN\u00a02", "N", "side by side"),       # a no-break space hid the juxtaposition
-    ("1 (nm) 2", "m", "side by side"), ("(1) 2 nm", "m", "side by side"), ("1 nm (2)", "m", "side by side"),
+    ("1 (nm) 2", "m", "one number with its unit"), ("(1) 2 nm", "m", "side by side"), ("1 nm (2)", "m", "side by side"),
     ("2 1/2 nm", "m", "side by side"),          # pint: 1 nm; a user may mean 2.5
     ("1e-9 N 1/2", "N", "side by side"),
     ("1e-320 nm", "m", "below the smallest double in m"), ("(1e-400) nm", "m", "smaller than the smallest double"),

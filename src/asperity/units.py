@@ -223,6 +223,10 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
                 else "")
         raise ValueError(f"{name} = {text!r}: one number with its unit, '.' the decimal point; ',' and ';' are "
                          f"not part of a quantity{mean}")
+    # digits of other scripts (not superscripts: 'nm²' is a unit) and '1_0' (Python's 10)
+    if any(not ch.isascii() and unicodedata.decimal(ch, None) is not None for ch in stripped) or \
+            re.search(r"\d_\d", stripped):
+        raise ValueError(f"{name} = {text!r}: write the number with the digits 0-9 (no '_' between them)")
     # pint drops characters it does not know and multiplies what is left ("2'5nm" is 10 nm,
     # '1 % nm' 0.01 nm): only those of numbers, units and arithmetic may reach it
     stray = sorted({ch for ch in stripped if not (ch.isascii() and (ch.isalnum() or ch in " .+-*/^()_"))
@@ -233,10 +237,6 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
     if re.search(r"\d*\.\d*\.", stripped) or re.search(r"[\d.)]\s*\(", stripped):
         raise ValueError(f"{name} = {text!r}: one number with its unit (two decimal points, or a number "
                          "directly before '(', are not read)")
-    # digits of other scripts (not superscripts: 'nm²' is a unit) and '1_0' (Python's 10)
-    if any(not ch.isascii() and unicodedata.decimal(ch, None) is not None for ch in stripped) or \
-            re.search(r"\d_\d", stripped):
-        raise ValueError(f"{name} = {text!r}: write the number with the digits 0-9 (no '_' between them)")
     if not re.match(r"[+-]?\s*(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z]))", stripped, re.ASCII | re.IGNORECASE):
         example = stripped if re.match(r"[A-Za-z\u00b5\u03bc\u00c5\u212b]", stripped) else "nm"
         raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {example}')")
