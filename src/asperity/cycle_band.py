@@ -192,10 +192,11 @@ class LoopBand:
         if math.isfinite(z_hi):
             cut |= z_hi - d < self.u_in + near
         q_lo = np.zeros((d.size, 4))
-        for i in np.flatnonzero(cut):
-            parts, q_lo[i] = self._cut_row(float(d[i]), float(u_c[i]), order)
+        rows = np.flatnonzero(cut)
+        if rows.size:
+            parts, q_lo[rows] = self._cut_rows(d[rows], u_c[rows], order)
             for k in range(order + 1):
-                out[k][i] = parts[k]
+                out[k][rows] = parts[k]
         rest = np.flatnonzero(~cut)
         if rest.size:
             parts = self._sums_inside(d[rest], u_c[rest], order)
@@ -240,46 +241,48 @@ class LoopBand:
                     out[k][rows] += parts[k]
         return out + [q_c[inv]]
 
-    def _cut_row(self, d: float, u_c: float, order: int):
-        r"""One row of :meth:`sums` whose band meets a support edge: the integral over
-        :math:`[a, b]`, :math:`a = \max(u_c, z_{lo} - d)`, :math:`b = \min(u_{in}, z_{hi} - d)`.
+    def _cut_nodes(self, d: float, u_c: float):
+        r"""Quadrature of one row whose band meets or nears a support edge, over :math:`[a, b]`,
+        :math:`a = \max(u_c, z_{lo} - d)`, :math:`b = \min(u_{in}, z_{hi} - d)`.
 
         The pieces are the panels' edges inside, refined geometrically towards an edge of the
-        density (each piece then as far from it as it is wide); the piece at the edge is
-        integrated in s, :math:`u = a + (u - a)s^k`, :math:`k = 4/(p + 1)` (p the density's
-        edge power), mirrored at an upper edge.  :math:`B_1 = \int q\phi' + q(a)\phi(z_{lo}^+)
-        - q(b)\phi(z_{hi}^-)` (a limit at an edge moves with :math:`d`), or, where
-        :math:`\phi'` is singular (0 < p < 1), by parts: :math:`q(b)\phi(d + b)[b = u_{in}]
-        - q(a)\phi(d + a)[a = u_c] - \int q_u\phi`, :math:`q_u` by central differences.
-        Returns ``([B_0, (B_1)], q(a))``.
+        density where it is not analytic there (each piece then as far from it as it is wide);
+        the piece at an edge is integrated in s, :math:`u = a + (u - a)s^k`, :math:`k = 4/(p + 1)`
+        (p the density's edge power), mirrored at an upper edge; the first panel in s,
+        :math:`u = u_{end} + s^4`, at the branch end.  Returns ``(u, weights, a, b, lo_edge,
+        hi_edge)`` (``u`` empty if :math:`b \le a`); an edge within 1e-12 of the band's end
+        counts as on it.
         """
         h = self.heights
         z_lo, z_hi = (float(z) for z in h.support)
-        lo_edge, hi_edge = z_lo - d > u_c, z_hi - d < self.u_in
+        tol = 1e-12 * max(1.0, abs(u_c), abs(self.u_in))
+        lo_edge, hi_edge = z_lo - d > u_c - tol, z_hi - d < self.u_in + tol
         a = max(u_c, z_lo - d)
         b = min(self.u_in, z_hi - d)
-        q_a = law_columns(self.law, np.array([a]))[0]
-        zero = [np.zeros(4) for _ in range(order + 1)]
         if not b > a:
-            return zero, q_a
+            return np.zeros(0), np.zeros(0), a, b, lo_edge, hi_edge
         p = float(h.edge_power)
         k = 4.0 / (p + 1.0) if math.isfinite(p) else 1.0
-        points = [a, b, *self.edges[(self.edges > a) & (self.edges < b)]]
-        grow = 2.0 ** np.arange(0, 40)
+        inner = self.edges[(self.edges > a) & (self.edges < b)]
+        points = [a, b, *inner]
+        grow = 2.0 ** np.arange(1, 60)
         # a density like (z - edge)^p is not analytic at its edge unless p is an integer (and the
         # family's other factor analytic: exponential, Weibull, Pearson III; not Johnson S_B):
-        # pieces refined towards it, each as wide as its distance from it
+        # pieces refined geometrically away from the edge's piece
         refine = not (float(p).is_integer() and h.name in _ANALYTIC_AT_EDGE)
         if refine and lo_edge:
-            points += list(a + (b - a) / grow[1:31])
+            w0 = (inner[0] if inner.size else b) - a
+            points += list(a + w0 * grow)
         elif refine and math.isfinite(z_lo):  # an edge just below a, at distance delta
-            delta = a - (z_lo - d)
-            points += list(a + delta * (grow[1:] - 1.0))
-        if refine and hi_edge:
-            points += list(b - (b - a) / grow[1:31])
+            points += list(a + (a - (z_lo - d)) * (grow - 1.0))
+        if hi_edge:  # the upper edge's piece stays clear of the branch end (q's root at u_end)
+            below = inner[-1] if inner.size else a
+            below = 0.5 * (a + b) if below < self.edges[1] else below
+            points.append(below)
+            if refine:
+                points += list(b - (b - below) * grow)
         elif refine and math.isfinite(z_hi):
-            delta = (z_hi - d) - b
-            points += list(b - delta * (grow[1:] - 1.0))
+            points += list(b - ((z_hi - d) - b) * (grow - 1.0))
         points = np.unique(np.clip(np.array(points), a, b))
         x, w = gauss_legendre(NODES_PER_PANEL)
         nodes, weights = [], []
@@ -297,27 +300,59 @@ class LoopBand:
                 u, wt = left + width * x, width * w
             nodes.append(u)
             weights.append(wt)
-        u, wt = np.concatenate(nodes), np.concatenate(weights)
+        return np.concatenate(nodes), np.concatenate(weights), a, b, lo_edge, hi_edge
+
+    def _cut_rows(self, d, u_c, order: int):
+        r"""The rows of :meth:`sums` whose band meets or nears a support edge (:meth:`_cut_nodes`),
+        the law evaluated once for all of them.  :math:`B_1 = \int q\phi' + q(a)\phi(z_{lo}^+)
+        - q(b)\phi(z_{hi}^-)` (a limit at an edge moves with :math:`d`), or, where :math:`\phi'`
+        is singular (0 < p < 1), by parts: :math:`q(b)\phi(d + b)[b = u_{in}] - q(a)\phi(d + a)[a = u_c]
+        - \int q_u\phi`, :math:`q_u` by central differences.  Returns ``([B_0, (B_1)], q(a))``."""
+        h = self.heights
+        z_lo, z_hi = (float(z) for z in h.support)
+        rows = [self._cut_nodes(float(di), float(ci)) for di, ci in zip(d, u_c, strict=True)]
+        sizes = np.array([r[0].size for r in rows])
+        u = np.concatenate([r[0] for r in rows])
+        wt = np.concatenate([r[1] for r in rows])
+        a = np.array([r[2] for r in rows])
+        b = np.array([r[3] for r in rows])
+        lo_edge = np.array([r[4] for r in rows])
+        hi_edge = np.array([r[5] for r in rows])
+        z = np.repeat(d, sizes) + u
         q = law_columns(self.law, u)
-        z = d + u
-        out = [(wt * h.pdf(z)) @ q]
+        q_a, q_b = law_columns(self.law, a), law_columns(self.law, b)
+        starts = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+        full = sizes > 0
+
+        def row_sums(values):  # per-row sums of (n_nodes, 4) values; 0 for empty rows
+            out = np.zeros((d.size, 4))
+            if u.size:
+                out[full] = np.add.reduceat(values, starts[full], axis=0)
+            return out
+
+        dens = wt * h.pdf(z)
+        out = [row_sums(dens[:, None] * q)]
         if order == 1:
+            p = float(h.edge_power)
+            with np.errstate(all="ignore"):
+                phi_a, phi_b = h.pdf(d + a), h.pdf(d + b)
             if 0.0 < p < 1.0:
-                step = np.minimum(1e-6 * np.maximum(1.0, np.abs(u)), 0.5 * (u - self.u_end))
-                q_u = (law_columns(self.law, u + step) - law_columns(self.law, u - step)) / (2.0 * step)[:, None]
-                b1 = -((wt * h.pdf(z)) @ q_u)
-                if not hi_edge:
-                    b1 = b1 + law_columns(self.law, np.array([b]))[0] * float(h.pdf(np.array([d + b]))[0])
-                if not lo_edge:
-                    b1 = b1 - q_a * float(h.pdf(np.array([d + a]))[0])
+                step = np.maximum(np.minimum(1e-6 * np.maximum(1.0, np.abs(u)), 0.5 * (u - self.u_end)),
+                                  1e-12 * np.maximum(1.0, np.abs(u)))
+                lo = np.maximum(u - step, self.u_end)  # one-sided at the branch end
+                q_u = (law_columns(self.law, u + step) - law_columns(self.law, lo)) / (u + step - lo)[:, None]
+                b1 = -row_sums(dens[:, None] * q_u)
+                b1 += np.where(hi_edge[:, None], 0.0, q_b * phi_b[:, None])
+                b1 -= np.where(lo_edge[:, None], 0.0, q_a * phi_a[:, None])
             else:
-                b1 = (wt * h.pdf_derivative(z, 1)) @ q
-                if lo_edge:
-                    b1 = b1 + q_a * float(h.pdf(np.array([np.nextafter(z_lo, math.inf)]))[0])
-                if hi_edge:
-                    b1 = b1 - law_columns(self.law, np.array([b]))[0] * float(
-                        h.pdf(np.array([np.nextafter(z_hi, -math.inf)]))[0])
-            out.append(b1)
+                b1 = row_sums((wt * h.pdf_derivative(z, 1))[:, None] * q)
+                if math.isfinite(z_lo):
+                    b1 += np.where(lo_edge[:, None], q_a * float(h.pdf(np.array([np.nextafter(z_lo, math.inf)]))[0]),
+                                   0.0)
+                if math.isfinite(z_hi):
+                    b1 -= np.where(hi_edge[:, None],
+                                   q_b * float(h.pdf(np.array([np.nextafter(z_hi, -math.inf)]))[0]), 0.0)
+            out.append(np.where(full[:, None], b1, 0.0))
         return out, q_a
 
     def loop(self, d_min, d_max: float):

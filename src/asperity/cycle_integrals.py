@@ -179,7 +179,11 @@ class CycleIntegrals:
         *band, q_c = self.band.sums(d, u_c, order, edge=True) if order else (*self.band.sums(d, u_c), None)
         out = [a + b for a, b in zip(app, band, strict=True)]
         if order == 1 and self.reach > 0:
-            out[1] = out[1] + q_c * self.heights.pdf(d_min + self.u_in)[:, None]
+            # where d_min + u_in is at or below the lowest summit, the band starts at the edge,
+            # whose motion the band's slope holds (the density's value there is no limit)
+            z = d_min + self.u_in
+            rho = np.where(z > float(self.heights.support[0]), self.heights.pdf(z), 0.0)
+            out[1] = out[1] + q_c * rho[:, None]
         return out
 
     def retract_sums(self, d, d_min, order: int = 0):
