@@ -474,3 +474,17 @@ def test_closest_approach_exactly_at_the_lowest_summit(spec):
     d = np.linspace(d_min, d_min - law_of(p).u_end, 40)
     np.testing.assert_allclose(cycle(*p, heights=h, d_min=d_min, d=d).retract.contacts,
                                asperity.separation_curve(d, *p, heights=h).contacts, rtol=1e-10)
+
+
+@pytest.mark.parametrize("spec", ["pearson3:skew=-2", "exponential"])
+def test_preload_curve_of_bounded_heights_is_its_cycles(spec):
+    """A pull-off search over many closest approaches at once gave the root finder's remaining
+    brackets the slopes of all of them (a shape mismatch: a traceback from preload_curve)."""
+    from asperity.heights import parse_heights
+
+    h = parse_heights(spec)
+    p = (0.00599, 87.6, 0.0285)
+    pc = preload_curve(np.geomspace(1.0, 1e4, 100), *p, heights=h)
+    for j in (0, 37, 71, 99):
+        single = cycle(*p, heights=h, preload=float(pc.preload[j]))
+        assert pc.pull_off[j] == pytest.approx(single.pull_off.force, rel=1e-12)

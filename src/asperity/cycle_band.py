@@ -186,7 +186,9 @@ class LoopBand:
         cut = np.zeros(d.size, dtype=bool)
         # also where an edge lies just outside the band: the density's power-law start (p < 2) is
         # then nearly singular at its end (a review: slopes 8 % off 1e-4 sigma above the edge)
-        near = self.width if float(h.edge_power) < 2.0 else 0.0
+        p = float(h.edge_power)
+        analytic = p.is_integer() and h.name in _ANALYTIC_AT_EDGE  # then an edge outside does not matter
+        near = self.width if p < 2.0 and not analytic else 0.0
         if math.isfinite(z_lo):
             cut |= z_lo - d > u_c - near
         if math.isfinite(z_hi):

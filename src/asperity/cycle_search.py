@@ -100,10 +100,10 @@ def _zone_minimum(ci: CycleIntegrals, d_min, d_max: float):
         a, b = dd[inner, k[inner] - 1], dd[inner, k[inner] + 1]
         dmin_in = d_min[inner]
 
-        def slope(x):
-            return ci.zone_sums(x, dmin_in, order=1)[1][:, 1]
+        def slope(x, rows):  # a review: the brackets still searched were a subset of dmin_in
+            return ci.zone_sums(x, dmin_in[rows], order=1)[1][:, 1]
 
-        x_star = bracketed_roots(slope, a, b)
+        x_star = bracketed_roots(slope, a, b, indexed=True)
         P_star = ci.zone_sums(x_star, dmin_in)[0][:, 1]
         better = P_star < best_P[inner]
         best_P[inner[better]] = P_star[better]
@@ -111,7 +111,7 @@ def _zone_minimum(ci: CycleIntegrals, d_min, d_max: float):
     return best_P, best_d
 
 
-def bracketed_roots(f, a, b, fa=None, fb=None, tol=1e-13, iterations=100):
+def bracketed_roots(f, a, b, fa=None, fb=None, tol=1e-13, iterations=100, indexed=False):
     """Roots of ``f`` (vectorised) in the brackets [a, b], by the Illinois method.
 
     Parameters
@@ -125,6 +125,9 @@ def bracketed_roots(f, a, b, fa=None, fb=None, tol=1e-13, iterations=100):
         ``f`` at the ends (default: evaluated).
     tol : float
         Relative width of the final bracket.
+    indexed : bool
+        Call ``f(x, rows)``, ``rows`` the brackets ``x`` belongs to, for an ``f`` that differs
+        from bracket to bracket (the brackets still searched are a subset).
 
     Returns
     -------
@@ -134,8 +137,10 @@ def bracketed_roots(f, a, b, fa=None, fb=None, tol=1e-13, iterations=100):
     """
     a = np.array(a, dtype=float, ndmin=1)
     b = np.array(b, dtype=float, ndmin=1)
-    fa = f(a) if fa is None else np.array(fa, dtype=float, ndmin=1)
-    fb = f(b) if fb is None else np.array(fb, dtype=float, ndmin=1)
+    every = np.arange(a.size)
+    call = (lambda x, rows: f(x, rows)) if indexed else (lambda x, rows: f(x))
+    fa = call(a, every) if fa is None else np.array(fa, dtype=float, ndmin=1)
+    fb = call(b, every) if fb is None else np.array(fb, dtype=float, ndmin=1)
     sa = np.sign(fa)
     x = np.where(np.abs(fa) <= np.abs(fb), a, b)
     active = np.flatnonzero(sa * np.sign(fb) < 0)
@@ -146,7 +151,7 @@ def bracketed_roots(f, a, b, fa=None, fb=None, tol=1e-13, iterations=100):
         A, B, FA, FB = a[active], b[active], fa[active], fb[active]
         c = (A * FB - B * FA) / (FB - FA)
         c = np.where((c > A) & (c < B), c, 0.5 * (A + B))
-        fc = f(c)
+        fc = call(c, active)
         move_a = np.sign(fc) == sa[active]  # the root lies between c and b
         a[active] = np.where(move_a, c, A)
         fa[active] = np.where(move_a, fc, FA)
