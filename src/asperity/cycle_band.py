@@ -189,10 +189,11 @@ class LoopBand:
         p = float(h.edge_power)
         analytic = p.is_integer() and h.name in _ANALYTIC_AT_EDGE  # then an edge outside does not matter
         near = self.width if p < 2.0 and not analytic else 0.0
+        tol = 1e-12 * np.maximum(1.0, np.abs(u_c))  # an edge on the band's end is on it (its motion counts)
         if math.isfinite(z_lo):
-            cut |= z_lo - d > u_c - near
+            cut |= z_lo - d > u_c - np.maximum(near, tol)
         if math.isfinite(z_hi):
-            cut |= z_hi - d < self.u_in + near
+            cut |= z_hi - d < self.u_in + np.maximum(near, tol)
         q_lo = np.zeros((d.size, 4))
         rows = np.flatnonzero(cut)
         if rows.size:
