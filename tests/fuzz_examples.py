@@ -106,7 +106,7 @@ def valid_calls(tmp: str) -> dict:
         "asperity.maugis_dugdale_load.md_contact_radius": lambda: {"P": [1e-9, 5e-9], **law, "lam": 1.0},
         "asperity.maugis_dugdale_load.md_normal_force": lambda: {"delta": [1e-10, 1e-9], **law, "lam": 1.0},
         "asperity.maugis_dugdale_load.md_pull_off_force": lambda: {**law, "lam": 1.0, "control": "load"},
-        "asperity.maugis_dugdale_load.penetration_in_maugis_units": lambda: {"delta": [1e-10, 1e-9], **law},
+        "asperity.maugis_units.penetration_in_maugis_units": lambda: {"delta": [1e-10, 1e-9], **law},
         # elastic-plastic asperities and the size effect
         "asperity.jackson_green.jg_yield_coefficient": lambda: {"nu": 0.3},
         "asperity.jackson_green_hardness.jg_yield_from_hardness": lambda: {"H": 2.84},

@@ -24,7 +24,7 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.plasticity", "asperity.cycle",
                    "asperity.cycle_run", "asperity.cycle_band", "asperity.instrument", "asperity.physical_cycle",
                    "asperity.sweeps.run",
-                   "asperity.maugis_dugdale_load", "asperity.cos", "asperity.amontons",
+                   "asperity.maugis_dugdale_load", "asperity.maugis_units", "asperity.cos", "asperity.amontons",
                    "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare",
                    "asperity.persson", "asperity.icha.field", "asperity.icha.solver", "asperity.icha.summits",
                    "asperity.icha.contact",

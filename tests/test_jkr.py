@@ -129,3 +129,21 @@ def test_normal_force_is_the_stable_branch():
 def test_bad_physical_input(kwargs, match):
     with pytest.raises(ValueError, match=match):
         jkr.jkr_contact_radius([0.0], **kwargs)
+
+
+def test_normal_force_broadcasts_over_the_sphere():
+    """delta, R, w and E_star broadcast like a ufunc; Hertz (w = 0) and JKR elements side by side."""
+    delta = np.array([1e-9, -5e-11, 2e-9, 0.0])
+    R = np.array([[1e-6], [100e-9]])
+    w = np.array([0.1, 0.2, 0.0, 0.0])
+    F = jkr.jkr_normal_force(delta, R=R, w=w, E_star=1e11)
+    assert F.shape == (2, 4)
+    for i, j in np.ndindex(F.shape):
+        expected = float(jkr.jkr_normal_force(float(delta[j]), R=float(R[i, 0]), w=float(w[j]), E_star=1e11))
+        assert F[i, j] == pytest.approx(expected, rel=1e-14)
+    # the Hertz elements are Hertz's closed form
+    np.testing.assert_allclose(F[:, 2], 4 / 3 * 1e11 * np.sqrt(R[:, 0]) * 2e-9**1.5, rtol=1e-15)
+    with pytest.raises(ValueError, match="must be >= 0 without adhesion"):
+        jkr.jkr_normal_force([-1e-10, -1e-10], R=1e-6, w=[0.1, 0.0], E_star=1e11)
+    with pytest.raises(ValueError, match="must have shapes that broadcast"):
+        jkr.jkr_normal_force([1e-9, 2e-9], R=[1e-6, 2e-6, 3e-6], w=0.1, E_star=1e11)

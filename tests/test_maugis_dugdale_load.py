@@ -107,7 +107,9 @@ def test_normal_force_limits():
     ({"R": R, "w": 0.0, "E_star": E_STAR, "lam": 1.0}, "^w must be > 0"),
     ({"R": R, "w": W, "E_star": np.nan, "lam": 1.0}, "^E_star must be finite"),
     ({"R": R, "w": W, "E_star": E_STAR, "lam": 1e13}, "lam"),
-    ({"R": [R, R], "w": W, "E_star": E_STAR, "lam": 1.0}, "^R must be a scalar"),
+    ({"R": [R, R], "w": [W, W, W], "E_star": E_STAR, "lam": 1.0}, "^R, w, E_star, lam must have shapes that broadcast"),
+    ({"R": R, "w": W, "E_star": E_STAR, "lam": [1.0, 1e13]}, "^lam"),
+    ({"R": R, "w": [W, W], "E_star": E_STAR, "sigma0": [1e9, 1e9, 1e9]}, "^R, w, E_star, sigma0 must have shapes"),
 ])
 def test_bad_physical_input(kwargs, match):
     with pytest.raises(ValueError, match=match):
@@ -120,3 +122,54 @@ def test_bad_load(bad, match):
     with pytest.raises(ValueError, match=match):
         mdl.md_solve_load(bad, 1.0)
     assert mdl.md_solve_load([], 1.0)[0].shape == (0,)
+
+
+# -- broadcasting over the sphere, the material and lambda (like a ufunc) ----------------------
+RADII = np.array([[10e-9], [1e-6], [30e-6]])  # (3, 1)
+WORKS = np.array([0.05, 0.1, 0.3, 1.0])        # (4,)
+
+
+def _loop(func, shape, **kwargs):
+    """The scalar calls, one per element of the broadcast inputs (the slow path)."""
+    arrays = np.broadcast_arrays(*kwargs.values())
+    out = np.empty(shape)
+    for index in np.ndindex(shape):
+        out[index] = float(func(**{k: float(a[index]) for k, a in zip(kwargs, arrays, strict=True)}))
+    return out
+
+
+@pytest.mark.parametrize("adhesion", [{"sigma0": 1e9}, {"lam": np.array([1e-3, 0.3, 3.0, 1e4])},
+                                      {"sigma0": np.array([[1e8], [1e9], [3e10]])}])
+def test_physical_shell_broadcasts_like_a_ufunc(adhesion):
+    """R (3, 1) with w (4,) and a Dugdale stress or lambda, scalar or array: (3, 4) results equal to
+    the scalar calls, whichever lambdas the elements share."""
+    common = {"R": RADII, "w": WORKS, "E_star": E_STAR, **adhesion}
+    F = mdl.md_pull_off_force(**common)
+    assert F.shape == (3, 4)
+    np.testing.assert_allclose(F, _loop(mdl.md_pull_off_force, (3, 4), **common), rtol=1e-15)
+    P = -0.5 * F  # within the load-stable branch of every element
+    a = mdl.md_contact_radius(P, **common)
+    np.testing.assert_allclose(a, _loop(mdl.md_contact_radius, (3, 4), P=P, **common), rtol=1e-13)
+    delta = np.array([1e-10, 5e-10, 1e-9, 2e-9])
+    f = mdl.md_normal_force(delta, **common)
+    np.testing.assert_allclose(f, _loop(mdl.md_normal_force, (3, 4), delta=delta, **common), rtol=1e-13)
+    assert isinstance(mdl.md_pull_off_force(R=R, w=W, E_star=E_STAR, lam=1.0), float)
+
+
+def test_broadcast_shell_keeps_the_limits():
+    """JKR (lambda -> inf) and DMT (lambda -> 0) side by side in one call."""
+    lam = np.array([1e8, 1e-10])
+    F = mdl.md_pull_off_force(R=R, w=W, E_star=E_STAR, lam=lam)
+    np.testing.assert_allclose(F / (math.pi * W * R), [1.5, 2.0], rtol=1e-4)
+    a = mdl.md_contact_radius(0.0, R=R, w=W, E_star=E_STAR, lam=lam)
+    np.testing.assert_allclose(a, [float(jkr.jkr_contact_radius(0.0, R=R, w=W, E_star=E_STAR)),
+                                   float(dmt.dmt_contact_radius(0.0, R=R, w=W, E_star=E_STAR))], rtol=1e-4)
+    assert mdl.md_normal_force(np.empty((0, 2)), R=R, w=W, E_star=E_STAR, lam=lam).shape == (0, 2)
+
+
+def test_penetration_in_maugis_units_broadcasts():
+    D, unit = mdl.penetration_in_maugis_units(1e-9, R=RADII, w=WORKS, E_star=E_STAR)
+    assert D.shape == (3, 4) and unit.shape == (3, 4)
+    K = 4.0 / 3.0 * E_STAR
+    np.testing.assert_allclose(D, 1e-9 / np.cbrt(math.pi**2 * WORKS**2 * RADII / K**2), rtol=1e-15)
+    np.testing.assert_allclose(unit, math.pi * WORKS * RADII, rtol=1e-15)

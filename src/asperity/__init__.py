@@ -110,6 +110,7 @@ _SUBMODULES = (
     "materials",
     "maugis_dugdale",
     "maugis_dugdale_load",
+    "maugis_units",
     "multi_asperity",
     "instrument",
     "nix_gao",

@@ -28,9 +28,8 @@ from ._validation import (
     check_positive,
     check_positive_scaled,
     check_radius,
-    scalar,
 )
-from .maugis_dugdale_load import penetration_in_maugis_units
+from .maugis_units import penetration_in_maugis_units
 from .units import to_si
 
 __all__ = ["jkr_load", "jkr_penetration", "jkr_pull_off", "jkr_solve_load", "jkr_solve", "jkr_contact_radius",
@@ -347,23 +346,23 @@ def jkr_normal_force(delta, *, R, w, E_star):
         Penetration :math:`\delta` (m) of the undeformed sphere into the flat (negative: apart),
         from the end of the stable branch, :math:`-0.9086\,(\pi^2w^2R/K^2)^{1/3}`, up; >= 0 for
         :math:`w = 0`.
-    R : float
+    R : array_like
         Sphere radius :math:`R` (m), > 0.
-    w : float
+    w : array_like
         Work of adhesion :math:`w` (J/m^2), >= 0.
-    E_star : float
+    E_star : array_like
         Composite Young's modulus :math:`E^*` (Pa), > 0.
 
     Returns
     -------
     ndarray
-        Normal force :math:`P` (N, compressive > 0), the shape of ``delta``.
+        Normal force :math:`P` (N, compressive > 0), the broadcast shape of the inputs.
 
     Raises
     ------
     ValueError
-        If an input is not real and finite or out of range, or a penetration lies below the
-        end of the stable branch.
+        If an input is not real and finite or out of range, the shapes do not broadcast, or
+        a penetration lies below the end of the stable branch.
 
     Examples
     --------
@@ -377,17 +376,22 @@ def jkr_normal_force(delta, *, R, w, E_star):
     Johnson, Kendall & Roberts (1971); Maugis (1992).
     """
     delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
-    R, w, K = (float(scalar(x, n)) for x, n in zip(_physical(R, w, E_star), ("R", "w", "E_star"), strict=True))
-    R, w, K = np.float64(R), np.float64(w), np.float64(K)  # extreme values: inf or 0, refused below
-    if w == 0.0:
-        if np.any(delta < 0):
-            raise ValueError("delta (penetration) must be >= 0 without adhesion (w = 0, Hertz)")
-        with np.errstate(all="ignore"):
-            F = K * np.sqrt(R) * delta**1.5
-        return check_finite_result(F, "the Hertz force", delta=delta, R=R, E_star=E_star)
-    delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E_star)
+    R, w, K = _physical(R, w, E_star)
+    shape = check_broadcast(delta=delta, R=R, w=w, E_star=K)
+    hertz = np.broadcast_to(w == 0.0, shape)
+    if np.any(hertz & (delta < 0)):
+        raise ValueError("delta (penetration) must be >= 0 without adhesion (w = 0, Hertz)")
     with np.errstate(all="ignore"):
-        F = jkr_solve(delta_hat)[1] * unit
+        F = np.where(hertz, K * np.sqrt(R) * np.maximum(delta, 0.0)**1.5, 0.0)
+    check_finite_result(F, "the Hertz force", delta=delta, R=R, E_star=E_star)
+    if np.all(hertz):
+        return F
+    adhesive = ~hertz
+    E = as_float_array(to_si(E_star, "Pa", "E_star"), "E_star")
+    delta_a, R_a, w_a, E_a = (np.broadcast_to(x, shape)[adhesive] for x in (delta, R, w, E))
+    delta_hat, unit = penetration_in_maugis_units(delta_a, R=R_a, w=w_a, E_star=E_a)
+    with np.errstate(all="ignore"):
+        F[adhesive] = jkr_solve(delta_hat)[1] * unit
     return check_finite_result(F, "the JKR force", delta=delta, R=R, w=w, E_star=E_star)
 
 

@@ -35,8 +35,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_finite_result, check_positive, scalar
+from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, scalar
 from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
+from .maugis_units import penetration_in_maugis_units
 from .units import to_si
 
 __all__ = ["P_MAX", "md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force",
@@ -165,69 +166,35 @@ def _invert_load(P, lam, po):
 
 
 def _scales(R, w, E_star, sigma0, lam):
-    """Validated R, w, K and the scalar lambda; exactly one of sigma0, lam must be given."""
-    R = float(scalar(check_positive(to_si(R, "m", "R"), "R"), "R"))
-    w = float(scalar(check_positive(to_si(w, "J/m^2", "w"), "w"), "w"))
-    E_star = float(scalar(check_positive(to_si(E_star, "Pa", "E_star"), "E_star"), "E_star"))
-    sigma0 = None if sigma0 is None else to_si(sigma0, "Pa", "sigma0")
+    """Validated R, w, E_star (SI) and lambda as arrays that broadcast together; exactly one of sigma0, lam."""
+    R = check_positive(to_si(R, "m", "R"), "R")
+    w = check_positive(to_si(w, "J/m^2", "w"), "w")
+    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
     if (sigma0 is None) == (lam is None):
         raise ValueError("give exactly one of sigma0 (Dugdale stress, Pa) and lam (Maugis parameter)")
     if lam is None:
-        lam = md_lambda(R, w, E_star, sigma0)
-    lam = float(scalar(check_lambda(lam), "lam"))
-    return R, w, (4.0 / 3.0) * E_star, lam
+        lam = md_lambda(R, w, E_star, to_si(sigma0, "Pa", "sigma0"))
+    lam = check_lambda(lam)
+    check_broadcast(R=R, w=w, E_star=E_star, **({"lam": lam} if sigma0 is None else {}))
+    return R, w, E_star, lam
 
 
-def penetration_in_maugis_units(delta, *, R, w, E_star):
-    r"""A penetration in Maugis' units, and his unit of force: :math:`(\Delta, \pi wR)`.
+def _per_lambda(solve, lam, *arrays):
+    """``solve(lam, *arrays)`` with a scalar lambda, over each group of equal lambdas.
 
-    .. math::
-        \Delta = \delta\Big(\frac{K^2}{\pi^2w^2R}\Big)^{1/3},\qquad K = \tfrac43E^*,
-
-    the units in which the JKR and Maugis-Dugdale solutions are written (loads in
-    :math:`\pi wR`).  Both units and :math:`\Delta` are checked: values of extreme
-    magnitude whose units leave double precision are refused, naming them.
-
-    Parameters
-    ----------
-    delta : array_like
-        Penetration :math:`\delta` (m).
-    R, w, E_star : float
-        Radius (m), work of adhesion (J/m^2) and contact modulus (Pa), each > 0.
-
-    Returns
-    -------
-    tuple
-        ``(Delta, force_unit)``: :math:`\Delta` (the shape of ``delta``) and :math:`\pi wR` (N).
-
-    Raises
-    ------
-    ValueError
-        If an input is not real, finite and positive (``delta`` real and finite), or a unit or
-        :math:`\Delta` leaves double precision (naming delta, R, w, E_star).
-
-    Examples
-    --------
-    >>> D, unit = penetration_in_maugis_units(np.array([1e-9]), R=1e-6, w=0.1, E_star=1e11)
-    >>> round(float(D[0]), 6), round(unit / (np.pi * 1e-7), 12)
-    (5.647539, 1.0)
-
-    References
-    ----------
-    D. Maugis, J. Colloid Interface Sci. 150 (1992) 243-269; Adams et al., Eqs (12)-(13).
+    ``arrays`` are broadcast with ``lam`` first; the result has their common shape.
     """
-    delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
-    R, w, E_star = (float(scalar(check_positive(to_si(x, u, n), n), n))
-                    for x, n, u in ((R, "R", "m"), (w, "w", "J/m^2"), (E_star, "E_star", "Pa")))
-    R, w, K = np.float64(R), np.float64(w), np.float64(4.0 / 3.0) * np.float64(E_star)
-    with np.errstate(all="ignore"):
-        scale = np.cbrt(np.pi**2 * w * w * R / (K * K))
-        unit = np.pi * w * R
-        check_finite_result([scale, 1.0 / scale, unit], "Maugis' units of length and force", R=R, w=w,
-                            E_star=E_star)
-        D = check_finite_result(delta / scale, "the penetration in Maugis' units", delta=delta, R=R, w=w,
-                                E_star=E_star)
-    return D, float(unit)
+    arrays = np.broadcast_arrays(lam, *arrays)
+    lam, arrays = arrays[0], arrays[1:]
+    values = np.unique(lam)
+    if values.size <= 1:
+        out = np.asarray(solve(float(values[0]) if values.size else 1.0, *arrays), dtype=float)
+        return out if out.shape == lam.shape else np.broadcast_to(out, lam.shape).copy()
+    out = np.empty(lam.shape)
+    for value in values:
+        mask = lam == value
+        out[mask] = solve(float(value), *(a[mask] for a in arrays))
+    return out
 
 
 def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
@@ -246,27 +213,27 @@ def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     P : array_like
         Normal load :math:`P` (N, compressive > 0), from minus the pull-off force
         (:func:`md_pull_off_force`) up.
-    R : float
+    R : array_like
         Sphere (tip) radius :math:`R` (m), > 0.
-    w : float
+    w : array_like
         Work of adhesion :math:`w` (J/m^2), > 0.
-    E_star : float
+    E_star : array_like
         Composite Young's modulus :math:`E^*` (Pa), > 0.
-    sigma0 : float, optional
+    sigma0 : array_like, optional
         Dugdale adhesive stress :math:`\sigma_0` (Pa), > 0; or give ``lam``.
-    lam : float, optional
+    lam : array_like, optional
         Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``; or give ``sigma0``.
 
     Returns
     -------
     ndarray
-        Contact radius :math:`a` (m), the shape of ``P``.
+        Contact radius :math:`a` (m), the broadcast shape of the inputs.
 
     Raises
     ------
     ValueError
-        If an input is not real and finite or out of range, both or neither of ``sigma0``
-        and ``lam`` are given, or a load is more tensile than the pull-off load.
+        If an input is not real and finite or out of range, the shapes do not broadcast,
+        both or neither of ``sigma0`` and ``lam`` are given, or a load is more tensile than the pull-off load.
 
     Examples
     --------
@@ -280,12 +247,14 @@ def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     ----------
     Maugis (1992), Eqs (11)-(14) of Adams et al.; Johnson & Greenwood (1997).
     """
-    R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
+    R, w, E, lam = _scales(R, w, E_star, sigma0, lam)
     P = as_float_array(to_si(P, "N", "P"), "P", allow_empty=True)
+    check_broadcast(P=P, R=R, w=w, E_star=E, lam=lam)
+    K = np.float64(4.0 / 3.0) * E
     with np.errstate(all="ignore"):
         P_hat = P / (np.pi * w * R)
     check_finite_result(P_hat, "the load P/(pi w R)", P=P, R=R, w=w)
-    A = md_solve_load(P_hat, lam)[0]
+    A = _per_lambda(lambda x, p: md_solve_load(p, x)[0], lam, P_hat)
     with np.errstate(all="ignore"):
         a = A * np.cbrt(np.pi * w * R * R / K)
     return check_finite_result(a, "the Maugis-Dugdale contact radius", P=P, R=R, w=w, E_star=E_star)
@@ -306,27 +275,27 @@ def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
     delta : array_like
         Penetration :math:`\delta` (m) of the undeformed sphere into the flat (negative: apart),
         from the end of the stable branch up.
-    R : float
+    R : array_like
         Sphere radius :math:`R` (m), > 0.
-    w : float
+    w : array_like
         Work of adhesion :math:`w` (J/m^2), > 0.
-    E_star : float
+    E_star : array_like
         Composite Young's modulus :math:`E^*` (Pa), > 0.
-    sigma0 : float, optional
+    sigma0 : array_like, optional
         Dugdale adhesive stress :math:`\sigma_0` (Pa), > 0; or give ``lam``.
-    lam : float, optional
+    lam : array_like, optional
         Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``; or give ``sigma0``.
 
     Returns
     -------
     ndarray
-        Normal force :math:`P` (N, compressive > 0), the shape of ``delta``.
+        Normal force :math:`P` (N, compressive > 0), the broadcast shape of the inputs.
 
     Raises
     ------
     ValueError
-        If an input is not real and finite or out of range, both or neither of ``sigma0``
-        and ``lam`` are given, or a penetration lies below the end of the stable branch.
+        If an input is not real and finite or out of range, the shapes do not broadcast,
+        both or neither of ``sigma0`` and ``lam`` are given, or a penetration lies below the end of the stable branch.
 
     Examples
     --------
@@ -340,11 +309,12 @@ def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
     ----------
     Maugis (1992), Eqs (11)-(14) of Adams et al.
     """
-    R, w, K, lam = _scales(R, w, E_star, sigma0, lam)
+    R, w, E, lam = _scales(R, w, E_star, sigma0, lam)
     delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
-    delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E_star)
+    check_broadcast(delta=delta, R=R, w=w, E_star=E, lam=lam)
+    delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E)
     with np.errstate(all="ignore"):
-        F = md_solve(delta_hat, lam)[1] * unit
+        F = _per_lambda(lambda x, d: md_solve(d, x)[1], lam, delta_hat) * unit
     return check_finite_result(F, "the Maugis-Dugdale force", delta=delta, R=R, w=w, E_star=E_star)
 
 
@@ -360,15 +330,15 @@ def md_pull_off_force(*, R, w, E_star, sigma0=None, lam=None, control: str = "lo
 
     Parameters
     ----------
-    R : float
+    R : array_like
         Sphere radius :math:`R` (m), > 0.
-    w : float
+    w : array_like
         Work of adhesion :math:`w` (J/m^2), > 0.
-    E_star : float
+    E_star : array_like
         Composite Young's modulus :math:`E^*` (Pa), > 0.
-    sigma0 : float, optional
+    sigma0 : array_like, optional
         Dugdale adhesive stress :math:`\sigma_0` (Pa), > 0; or give ``lam``.
-    lam : float, optional
+    lam : array_like, optional
         Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``; or give ``sigma0``.
     control : {'load', 'displacement'}
         Which quantity is controlled (default ``'load'``, an AFM in force spectroscopy with a
@@ -376,14 +346,15 @@ def md_pull_off_force(*, R, w, E_star, sigma0=None, lam=None, control: str = "lo
 
     Returns
     -------
-    float
-        The pull-off force (N), > 0.
+    float or ndarray
+        The pull-off force (N), > 0: a float for scalar inputs, else an array of their
+        broadcast shape.
 
     Raises
     ------
     ValueError
-        If an input is not real and finite or out of range, both or neither of ``sigma0``
-        and ``lam`` are given, or ``control`` is neither name.
+        If an input is not real and finite or out of range, the shapes do not broadcast,
+        both or neither of ``sigma0`` and ``lam`` are given, or ``control`` is neither name.
 
     Examples
     --------
@@ -391,12 +362,18 @@ def md_pull_off_force(*, R, w, E_star, sigma0=None, lam=None, control: str = "lo
     >>> F = md_pull_off_force(R=1e-6, w=0.05, E_star=1e9, lam=1e8)
     >>> round(F / (1.5 * math.pi * 0.05 * 1e-6), 6)  # JKR: 3/2 pi w R
     1.0
+    >>> F = md_pull_off_force(R=[1e-6, 2e-6], w=0.05, E_star=1e9, lam=[1e8, 1e-8])  # JKR, DMT
+    >>> [round(float(f / (math.pi * 0.05 * 1e-6)), 6) for f in F]
+    [1.5, 4.0]
 
     References
     ----------
     Maugis (1992); Johnson & Greenwood (1997).
     """
-    R, w, _, lam = _scales(R, w, E_star, sigma0, lam)
+    R, w, E, lam = _scales(R, w, E_star, sigma0, lam)
+    shape = check_broadcast(R=R, w=w, E_star=E, lam=lam)
+    P_po = _per_lambda(lambda x, _: md_pull_off(x, control).P, lam, np.broadcast_to(R, shape))
     with np.errstate(all="ignore"):
-        F = -md_pull_off(lam, control).P * np.pi * np.float64(w) * R
-    return float(check_finite_result(F, "the pull-off force", w=w, R=R))
+        F = -(P_po * np.pi) * w * R
+    F = check_finite_result(F, "the pull-off force", w=w, R=R)
+    return float(F) if F.ndim == 0 else F

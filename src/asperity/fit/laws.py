@@ -182,11 +182,9 @@ class MDFit(_Law):
         lam = float(md_lambda(v["R_m"], v["w_J_m2"], v["E_star_Pa"], v["sigma0_Pa"]))
         return min(max(lam, LAMBDA_RANGE[0]), LAMBDA_RANGE[1])
 
-    def pull_off_value(self, v):
-        if np.ndim(v["R_m"]) or np.ndim(v["w_J_m2"]):  # one condition per row
-            R, w = np.broadcast_arrays(v["R_m"], v["w_J_m2"])
-            return np.array([self.pull_off_value({**v, "R_m": r, "w_J_m2": x}) for r, x in zip(R, w, strict=True)])
-        return md_pull_off_force(R=v["R_m"], w=v["w_J_m2"], E_star=v["E_star_Pa"], lam=self.lam(v))
+    def pull_off_value(self, v):  # broadcasts over a radius or work of adhesion per row
+        lam = np.clip(md_lambda(v["R_m"], v["w_J_m2"], v["E_star_Pa"], v["sigma0_Pa"]), *LAMBDA_RANGE)
+        return md_pull_off_force(R=v["R_m"], w=v["w_J_m2"], E_star=v["E_star_Pa"], lam=lam)
 
     def contact_radius(self, P, v):
         return md_contact_radius(P, R=v["R_m"], w=v["w_J_m2"], E_star=v["E_star_Pa"], lam=self.lam(v))
