@@ -217,3 +217,19 @@ def test_characters_pint_would_drop_are_refused(text):
                                                 ("10 N m^\u22121", "N/m", 10.0), ("2e14 m^\u22122", "1/m^2", 2e14)])
 def test_the_typeset_minus_sign_is_a_minus(text, unit, value):
     assert parse_quantity(text, unit, "x") == pytest.approx(value, rel=1e-15)
+
+
+@pytest.mark.parametrize("text, unit", [("1e-200*1e-200 m", "m"), ("1e-200 m * 1e-200", "m"),
+                                        ("-1e-200*1e-200 nN", "N"), ("1e-200*-1e-200 m", "m"),
+                                        ("1e-160 nm*1e-160", "m"), ("1e-200 m / 1e200", "m")])
+def test_a_product_that_underflows_is_refused(text, unit):
+    """Each literal was checked, but arithmetic of nonzero numbers could still round to 0 m."""
+    with pytest.raises(ValueError, match="product of its nonzero numbers is below the smallest double"):
+        parse_quantity(text, unit, "x")
+
+
+@pytest.mark.parametrize("text, value", [("0*5 nm", 0.0), ("(1 - 1) nm", 0.0), ("3 m - 3 m", 0.0),
+                                         ("1e-5*1e-5 nm", 1e-19), ("2 Angstrom", 2e-10), ("2 angstrom", 2e-10),
+                                         ("2\u00c5", 2e-10)])
+def test_zeros_that_are_meant_and_the_angstrom_spellings(text, value):
+    assert parse_quantity(text, "m", "x") == pytest.approx(value, rel=1e-15, abs=0.0)

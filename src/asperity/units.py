@@ -47,7 +47,9 @@ def unit_registry():
         import pint
     except ImportError:  # pragma: no cover - depends on the environment
         raise ImportError(f"units need pint: {_INSTALL}") from None
-    return pint.UnitRegistry()
+    registry = pint.UnitRegistry()
+    registry.define("@alias angstrom = Angstrom")  # the capitalised spelling of instrument files
+    return registry
 
 
 def _unit_label(unit: str) -> str:
@@ -199,9 +201,22 @@ def parse_quantity(text: str, unit: str, name: str, *, require_unit: bool = True
         raise ValueError(f"{name} = {text!r} is not a quantity with a unit compatible with "
                          f"{_unit_label(unit)} ({type(err).__name__}: {err})") from None
     if not is_quantity(quantity):  # pint returns a plain number for e.g. '2*3'
+        _check_no_underflow(float(quantity), stripped, text, name, unit)
         return parse_quantity(repr(float(quantity)), unit, name, require_unit=require_unit)
-    value = _convert(quantity, unit, name)
-    return float(value)
+    value = float(_convert(quantity, unit, name))
+    _check_no_underflow(value, stripped, text, name, unit)
+    return value
+
+
+def _check_no_underflow(value: float, stripped: str, text: str, name: str, unit: str) -> None:
+    """Refuse an expression of nonzero factors that rounds to 0 ('1e-200*1e-200 m'), as a single
+    literal that does ('1e-400 m') is; a zero factor ('0*5 nm') or a sum or difference, which may
+    cancel ('(1 - 1) nm'), is left alone."""
+    if value != 0.0 or re.search(r"(?<![eE(*/^\s])\s*[+-]", stripped[1:]):
+        return
+    if all(float(token) != 0.0 for token in _NUMBER_TOKEN.findall(stripped)):
+        raise ValueError(f"{name} = {text!r} is 0 {_unit_label(unit)}: the product of its nonzero numbers is "
+                         "below the smallest double (about 5e-324); give a value of physical size")
 
 
 #: Two terms side by side with only spaces between, the second a number (pint would multiply
