@@ -51,7 +51,7 @@ def test_engine_reproduces_the_gaussian_path(params):
 def test_hertz_integrals_are_the_gw_moments(case):
     """Without adhesion n/N = F_0, A/(N pi b^2) = beta^2 F_1, P/(NGb^2) = (4/3)(2/(1-nu)) alpha beta^2 F_3/2."""
     dist = fast(case)
-    tab = Tabulation(ModelParameters(ALPHA, BETA), -5.0, 8.0, dist)
+    tab = Tabulation(ModelParameters(ALPHA, BETA), -5.0, 8.1, dist)
     d = np.linspace(-5.0, 8.0, 53) + 0.0123
     S = tab.sums(d)[0]
     F0, F1, F15 = (dist.moment(d, n) for n in (0, 1, 1.5))

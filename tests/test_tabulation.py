@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from asperity.asperity_law import AsperityLaw, ModelParameters
-from asperity.heights import GAUSSIAN
+from asperity.heights import GAUSSIAN, Exponential, Mixture
 from asperity.tabulation import Tabulation, check_separation, check_tabulation
 
 P = ModelParameters(0.01, 1000.0, 1e-3)
@@ -48,3 +48,23 @@ def test_check_separation_range():
     np.testing.assert_array_equal(check_separation([-1e4, 30.0]), [-1e4, 30.0])
     with pytest.raises(ValueError, match=r"d \(separation d/sigma\) must lie in"):
         check_separation([30.5])
+
+
+@pytest.mark.parametrize("heights", [GAUSSIAN, Mixture(), Exponential()], ids=repr)
+@pytest.mark.parametrize("bad", [[-8.0], [2.0, 50.0], [np.nan], [np.inf]])
+def test_separations_outside_the_nodes_are_refused(heights, bad):
+    """A review: beyond its range a Gaussian tabulation gave 867011 for 867062 at d = -8 and 0
+    at d = -50 (its nodes end), and 0 at NaN; the exponential one already refused."""
+    tab = Tabulation(ModelParameters(0.01, 1000.0), -2.0, 4.0, heights)
+    with pytest.raises(ValueError, match="^d|outside the range"):
+        tab.evaluate(bad)
+    with pytest.raises(ValueError, match="^d|outside the range"):
+        tab.sums(bad, order=1)
+
+
+def test_order_is_checked():
+    tab = Tabulation(ModelParameters(0.01, 1000.0), -2.0, 4.0)
+    for bad in (3, -1, 1.5, True, "1"):
+        with pytest.raises(ValueError, match="^order must be 0, 1 or 2"):
+            tab.sums([0.0], order=bad)
+    assert tab.evaluate(np.empty((0, 3)))["P"].shape == (0, 3)

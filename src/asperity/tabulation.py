@@ -169,7 +169,22 @@ class Tabulation:
 
         Separations are sorted into blocks spanning at most a few sigma; each block sums
         only the nodes its height densities reach, so wide load ranges stay cheap.
+
+        Raises
+        ------
+        ValueError
+            If ``d`` is not real and finite or lies outside ``[d_min, d_max]`` (the nodes
+            serve no other separation: :meth:`extended` first; heights tabulated in the
+            separation, :class:`~asperity.height_sums.HeightSums`, serve their own, wider
+            range), or ``order`` is not 0, 1 or 2.
         """
+        d = as_float_array(d, "d", allow_empty=True)
+        if self.height_sums is None and d.size and (d.min() < self.d_min or d.max() > self.d_max):
+            raise ValueError(f"d (separation d/sigma) must lie in [{self.d_min:g}, {self.d_max:g}], the separations "
+                             f"this tabulation serves (extend it first: tab.extended(d_min, d_max)); got values "
+                             f"from {d.min():g} to {d.max():g}")
+        if isinstance(order, bool) or order not in (0, 1, 2):
+            raise ValueError(f"order must be 0, 1 or 2, got {order!r}")
         out = self._sums(d, order)
         # n/N = integral of phi <= 1: the quadrature's round-off can pass 1 by a few ulps
         out[0] = out[0].copy()
@@ -210,8 +225,9 @@ class Tabulation:
         return [p + q for p, q in zip(*parts, strict=True)]
 
     def evaluate(self, d):
-        """Dict of contacts, P, F, area at separations ``d`` (any shape)."""
-        d = np.asarray(d, dtype=float)
+        """Dict of contacts, P, F, area at separations ``d`` (any shape) in ``[d_min, d_max]``;
+        a ValueError otherwise, as :meth:`sums`."""
+        d = as_float_array(d, "d", allow_empty=True)
         s = self.sums(d)[0]
         return {name: s[:, i].reshape(d.shape) for i, name in enumerate(COLUMNS)}
 
