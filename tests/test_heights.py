@@ -4,7 +4,11 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from asperity.heights import GAUSSIAN, Gaussian, HeightDistribution
+from asperity.heights import GAUSSIAN, Exponential, Gaussian, HeightDistribution, Johnson, Mixture, PearsonIII, Weibull
+from asperity.heights.base import gw_moment_quadrature
+from asperity.heights.exponential import exponential_moment
+from asperity.heights.gaussian import gaussian_moment
+from asperity.heights.pearson import pearson3_moment
 
 
 def moment_mp(d, k):
@@ -60,3 +64,51 @@ def test_factorised_sums_equal_generic():
 def test_bad_order():
     with pytest.raises(ValueError, match="order"):
         GAUSSIAN.moment(0.0, -1.5)
+
+
+# -- the moments far in the tails, and their orders (a review: NaN, inf and stray exceptions) ----
+@pytest.mark.parametrize("dist", [Gaussian(), Mixture(), Exponential(), PearsonIII(0.5), PearsonIII(-0.5),
+                                  Weibull(0.5), Johnson(0.5, 4.0)], ids=repr)
+def test_moments_far_in_the_tails_are_their_limits(dist):
+    """Far above every summit F_n = 0 (the Gaussian gave NaN at d = 2500); far below, F_0 = 1 and
+    F_n = |d|^n to leading order (Pearson III's closed form overflowed to inf at -1e19)."""
+    for d in (2500.0, 1e300):  # F_0 is the survival function (Johnson S_U's tail is heavy: 6e-88 at 2500)
+        assert dist.moment(d, 0) == pytest.approx(float(dist.sf(d)), rel=1e-8, abs=1e-300)
+        assert 0.0 <= dist.moment(d, 1.5) < 1e-80
+    assert dist.moment(-1e19, 0) == pytest.approx(1.0, rel=1e-12)
+    assert dist.moment(-1e19, 1.5) == pytest.approx(1e19**1.5, rel=1e-12)
+    with pytest.raises(ValueError, match="overflows double precision"):
+        dist.moment(-1e19, 20)
+
+
+@pytest.mark.parametrize("order", [171, 20.5, np.inf, -1.0, np.nan, [1.0, 2.0], True, "1"])
+def test_moment_orders_out_of_range_are_named(order):
+    with pytest.raises(ValueError, match="^order must"):
+        Gaussian().moment(1.0, order)
+    with pytest.raises(ValueError, match="^order must"):
+        gaussian_moment(1.0, order)
+
+
+def test_a_0d_order_is_a_number_and_derivative_orders_are_checked():
+    assert Gaussian().moment(1.0, np.array(1.5)) == Gaussian().moment(1.0, 1.5)
+    for dist in (Gaussian(), Mixture(), Exponential(), PearsonIII(0.5), Weibull(0.5), Johnson(0.5, 4.0)):
+        for bad in (np.array([1, 2]), 3, 1.0, True):
+            with pytest.raises(ValueError, match="^order .*must be 1 or 2"):
+                dist.pdf_derivative(1.0, bad)
+    assert Gaussian().pdf(1e308) == 0.0 and Gaussian().pdf_derivative(1e308, 2) == 0.0
+
+
+def test_the_closed_forms_check_their_inputs():
+    with pytest.raises(ValueError, match="^d must be finite"):
+        pearson3_moment(np.nan, 1.5, 0.5)
+    with pytest.raises(ValueError, match="^skew must lie in"):
+        pearson3_moment(1.0, 1.5, 1e-320)
+    with pytest.raises(ValueError, match="^x must be a real number"):
+        gaussian_moment(True, 1.0)
+    with pytest.raises(ValueError, match="^d must be finite"):
+        exponential_moment([0.0, np.inf], 1.0)
+    assert gaussian_moment([], 1.5).shape == (0,)
+    # the closed forms still equal the quadrature of the definition
+    d = np.array([-2.0, 0.3, 3.0])
+    np.testing.assert_allclose(pearson3_moment(d, 1.5, 1.0), gw_moment_quadrature(PearsonIII(1.0), d, 1.5),
+                               rtol=1e-11)

@@ -51,9 +51,11 @@ from typing import ClassVar
 import numpy as np
 
 from .._validation import as_float_array
+from .._validation_files import short_repr
 from ..quadrature import gauss_legendre
 
-__all__ = ["HeightDistribution", "TAIL", "SF_FLOOR", "EDGE_BAND", "check_heights", "check_order", "tanh_sinh",
+__all__ = ["HeightDistribution", "TAIL", "SF_FLOOR", "EDGE_BAND", "MAX_ORDER", "check_heights", "check_order",
+           "check_derivative_order", "tanh_sinh",
            "gw_moment_quadrature", "decay_length"]
 
 #: Tail share taken as negligible: z_top and z_bottom are where sf and cdf fall below it
@@ -123,6 +125,10 @@ class HeightDistribution(abc.ABC):
         super().__init_subclass__(**kwargs)
         if "z_top" in cls.__dict__ and "z_bottom" not in cls.__dict__:
             cls.z_bottom = -cls.z_top  # the symmetric cut-off of the original interface
+        for name in ("pdf", "sf", "pdf_derivative"):  # every family's, checked the same way
+            method = cls.__dict__.get(name)
+            if method is not None and not getattr(method, "_checked", False):
+                setattr(cls, name, _checked_density(method, name))
 
     def __repr__(self) -> str:
         """``Name()``, so signatures and help() show the distribution, not an object address
@@ -200,15 +206,72 @@ class HeightDistribution(abc.ABC):
         d : array_like
             Separation :math:`\bar d` (any shape, finite).
         order : float
-            :math:`n > -1` (0: contact fraction, 1: area, 3/2: Hertz load).
+            :math:`-1 < n \le` :data:`MAX_ORDER` (0: contact fraction, 1: area, 3/2: Hertz load).
 
         Returns
         -------
         ndarray
             :math:`F_n(\bar d)`, shape of ``d``.
+
+        Raises
+        ------
+        ValueError
+            If ``d`` is not real and finite, ``order`` out of range, or the moment leaves
+            double precision.
         """
         d = as_float_array(d, "d", allow_empty=True)
-        return gw_moment_quadrature(self, d, check_order(order))
+        n = check_order(order)
+        return self._checked_moment(lambda x: gw_moment_quadrature(self, x, n), d, n)
+
+    def _checked_moment(self, raw, d, n):
+        """``raw(d)`` (a family's form of F_n) without warnings; entries where an intermediate
+        overflowed (a closed form far in a tail) are redone by :func:`gw_moment_quadrature`,
+        whose terms stay finite; a moment that itself leaves double precision is a ValueError."""
+        with np.errstate(all="ignore"):
+            out = np.array(raw(d), dtype=float)
+            bad = ~np.isfinite(out)
+            if bad.any():
+                out[bad] = gw_moment_quadrature(self, d[bad], n)
+        bad = ~np.isfinite(out)
+        if bad.any():
+            raise ValueError(f"the GW moment of order {n:g} overflows double precision at d = {short_repr(d[bad])}: "
+                             "give separations of physical size (within a few hundred sigma)")
+        return out
+
+
+#: Beyond this height every standardised density, its derivatives and its survival function
+#: have their limits (0, or 1 for the survival function below); a family's formula may
+#: overflow there (z^2 = inf) and give NaN, which :func:`_checked_density` replaces by them.
+_FAR = 1e150
+
+
+def _checked_density(method, name):
+    """``method`` (a family's pdf, sf or pdf_derivative) on finite heights, without warnings."""
+
+    @functools.wraps(method)
+    def checked(self, z, *args):
+        # the integrals call this with large float arrays: one sum decides (a NaN or an inf
+        # makes it non-finite, and finite heights of physical size never overflow it)
+        if not (type(z) is np.ndarray and z.dtype == np.float64 and np.isfinite(np.sum(z))):
+            z = as_float_array(z, "z", allow_empty=True)
+        with np.errstate(all="ignore"):
+            out = method(self, z, *args)
+            total = np.sum(out)
+        if np.isfinite(total):
+            return out
+        finite = np.isfinite(out)
+        if not finite.all():
+            z_b = np.broadcast_to(z, np.shape(out))
+            far = ~finite & (np.abs(z_b) >= _FAR)
+            limit = np.where(z_b < 0, 1.0, 0.0) if name == "sf" else 0.0
+            out = np.where(far, limit, out)
+            if not np.isfinite(out).all():
+                raise ArithmeticError(f"{type(self).__name__}.{name} lost precision at z = "
+                                      f"{short_repr(z_b[~np.isfinite(out)])}")  # a defect: report it
+        return out
+
+    checked._checked = True
+    return checked
 
 
 def check_heights(heights) -> HeightDistribution:
@@ -219,14 +282,29 @@ def check_heights(heights) -> HeightDistribution:
     return heights
 
 
+#: Highest order of a GW moment the closed forms and the quadrature serve (:func:`check_order`):
+#: the laws need 0, 1, 3/2 and a few more; beyond 20 the moments leave double precision for
+#: separations of a few hundred sigma.
+MAX_ORDER = 20.0
+
+
 def check_order(order) -> float:
-    """The order n of a GW moment as a float, n > -1."""
+    """The order n of a GW moment as a float, -1 < n <= :data:`MAX_ORDER` (a 0-d array is a number)."""
+    if isinstance(order, np.ndarray) and order.ndim == 0 and order.dtype.kind in "fiu":
+        order = order[()]
     if isinstance(order, bool) or not isinstance(order, int | float | np.integer | np.floating):
-        raise ValueError(f"order must be a real number > -1, got {order!r}")
+        raise ValueError(f"order must be one real number in (-1, {MAX_ORDER:g}], got {short_repr(order)}")
     k = float(order)
-    if not k > -1 or not math.isfinite(k):
-        raise ValueError(f"order must be > -1, got {order!r}")
+    if not -1.0 < k <= MAX_ORDER:
+        raise ValueError(f"order must lie in (-1, {MAX_ORDER:g}], got {short_repr(order)}")
     return k
+
+
+def check_derivative_order(order) -> int:
+    """The order of a density derivative: 1 or 2 (a ValueError naming ``order`` otherwise)."""
+    if isinstance(order, bool) or not isinstance(order, int | np.integer) or order not in (1, 2):
+        raise ValueError(f"order (of the density's derivative) must be 1 or 2, got {short_repr(order)}")
+    return int(order)
 
 
 @functools.lru_cache(maxsize=4)

@@ -236,4 +236,5 @@ class Empirical(GaussianSum):
             :math:`F_n(\bar d)`, shape of ``d``.
         """
         d = as_float_array(d, "d", allow_empty=True)
-        return mixture_moment(d, check_order(order), *self._components)
+        n = check_order(order)
+        return self._checked_moment(lambda x: mixture_moment(x, n, *self._components), d, n)

@@ -32,8 +32,8 @@ from typing import ClassVar
 import numpy as np
 from scipy import special
 
-from .._validation import as_float_array
-from .base import TAIL, HeightDistribution, check_order
+from .._validation import as_float_array, check_finite_result
+from .base import TAIL, HeightDistribution, check_derivative_order, check_order
 
 __all__ = ["Exponential", "exponential_moment"]
 
@@ -62,9 +62,7 @@ class Exponential(HeightDistribution):
 
     def pdf_derivative(self, z, order: int):
         """:math:`\\phi' = -\\phi`, :math:`\\phi'' = \\phi` inside the support (0 outside)."""
-        if order not in (1, 2):
-            raise ValueError(f"order must be 1 or 2, got {order}")
-        return (-1.0) ** order * self.pdf(z)
+        return (-1.0) ** check_derivative_order(order) * self.pdf(z)
 
     def sf(self, z):
         """Survival function :math:`e^{-(z+1)}` above -1, 1 below."""
@@ -107,7 +105,8 @@ class Exponential(HeightDistribution):
             :math:`F_n(\bar d)`, shape of ``d``.
         """
         d = as_float_array(d, "d", allow_empty=True)
-        return exponential_moment(d, check_order(order))
+        n = check_order(order)
+        return self._checked_moment(lambda x: _exponential_form(x, n), d, n)
 
 
 def exponential_moment(d, order: float):
@@ -125,22 +124,35 @@ def exponential_moment(d, order: float):
 
     Parameters
     ----------
-    d : ndarray
+    d : array_like
         Separations (any shape), finite.
     order : float
-        :math:`n > -1`.
+        :math:`-1 < n \le` :data:`~asperity.heights.base.MAX_ORDER`.
 
     Returns
     -------
     ndarray
         :math:`F_n(\bar d)`, shape of ``d``.
 
+    Raises
+    ------
+    ValueError
+        If ``d`` is not real and finite, ``order`` out of range, or :math:`F_n` leaves
+        double precision (far below the support, for high orders).
+
     References
     ----------
     Greenwood & Williamson (1966); Abramowitz & Stegun 6.5.3, 13.2.5.
     """
-    d = np.asarray(d, dtype=float)
-    n = float(order)
+    d = as_float_array(d, "d", allow_empty=True)
+    n = check_order(order)
+    with np.errstate(all="ignore"):
+        out = _exponential_form(d, n)
+    return check_finite_result(out, f"the exponential moment of order {n:g}", d=d)
+
+
+def _exponential_form(d, n):
+    """The closed form of :func:`exponential_moment` for checked arrays (any warnings to the caller)."""
     D = -1.0 - d
     out = special.gamma(n + 1.0) * np.exp(-np.maximum(-D, 0.0))
     mid = (D > 0) & (D <= 500.0)

@@ -37,7 +37,7 @@ from scipy import special
 
 from .._validation import as_float_array, check_scalar_range
 from ..quadrature import gauss_legendre
-from .base import EDGE_BAND, SF_FLOOR, TAIL, HeightDistribution, check_order, tanh_sinh
+from .base import EDGE_BAND, SF_FLOOR, TAIL, HeightDistribution, check_derivative_order, check_order, tanh_sinh
 from .johnson_fit import fit_johnson, sb_moments, su_moments
 
 __all__ = ["Johnson", "KURT_MAX"]
@@ -183,8 +183,7 @@ class Johnson(HeightDistribution):
 
     def pdf_derivative(self, z, order: int):
         """:math:`\\phi L_1` (order 1) or :math:`\\phi(L_1^2 + L_2)` (order 2), 0 outside the support."""
-        if order not in (1, 2):
-            raise ValueError(f"order must be 1 or 2, got {order}")
+        order = check_derivative_order(order)
         f = self.pdf(z)
         L1, L2 = self._log_derivatives(z)
         out = f * L1 if order == 1 else f * (L1 * L1 + L2)
@@ -228,6 +227,10 @@ class Johnson(HeightDistribution):
         """
         d = as_float_array(d, "d", allow_empty=True)
         n = check_order(order)
+        return self._checked_moment(lambda x: self._moment_form(x, n), d, n)
+
+    def _moment_form(self, d, n):
+        """The quadrature of :meth:`moment` in the normal variable, for checked arrays."""
         v_d = self._v_of(d)
         a = np.where(np.isposinf(v_d), 0.0, np.maximum(v_d, -_X_TAIL))[..., None]  # above the support: F = 0
         ts, _, tw = tanh_sinh()

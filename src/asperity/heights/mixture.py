@@ -37,8 +37,8 @@ from typing import ClassVar
 import numpy as np
 from scipy import special
 
-from .._validation import as_float_array, check_scalar_range
-from .base import HeightDistribution, check_order
+from .._validation import as_float_array, check_finite_result, check_scalar_range
+from .base import HeightDistribution, check_derivative_order, check_order
 from .gaussian import GAUSSIAN, gaussian_moment
 
 __all__ = ["Mixture", "GaussianSum", "KernelGaussian", "mixture_pdf", "mixture_pdf_derivative", "mixture_sf",
@@ -64,6 +64,7 @@ def mixture_pdf(z, weights, means, sds):
 
 def mixture_pdf_derivative(z, order, weights, means, sds):
     r"""First or second derivative of the mixture density, shape of ``z``."""
+    order = check_derivative_order(order)
     x = _standard(z, means, sds)
     poly = -x if order == 1 else x * x - 1.0
     return (poly * np.exp(-0.5 * x * x)) @ (np.asarray(weights) / np.asarray(sds) ** (1 + order)) / _SQRT_2PI
@@ -76,8 +77,12 @@ def mixture_sf(z, weights, means, sds):
 
 def mixture_moment(d, order, weights, means, sds):
     r"""GW moment :math:`\sum_i w_i s_i^n G_n((\bar d - m_i)/s_i)` (module docstring), shape of ``d``."""
-    d = np.asarray(d, dtype=float)
-    return sum(w * s**order * gaussian_moment((d - m) / s, order) for w, m, s in zip(weights, means, sds, strict=True))
+    d = as_float_array(d, "d", allow_empty=True)
+    order = check_order(order)
+    with np.errstate(all="ignore"):
+        out = sum(w * s**order * gaussian_moment((d - m) / s, order)
+                  for w, m, s in zip(weights, means, sds, strict=True))
+    return check_finite_result(out, f"the mixture's moment of order {order:g}", d=d)
 
 
 def mixture_stats(weights, means, sds) -> tuple[float, float, float, float]:
@@ -128,8 +133,7 @@ class GaussianSum(HeightDistribution):
 
     def pdf_derivative(self, z, order: int):
         """First or second derivative of the density."""
-        if order not in (1, 2):
-            raise ValueError(f"order must be 1 or 2, got {order}")
+        order = check_derivative_order(order)
         return mixture_pdf_derivative(z, order, *self._components)
 
     def sf(self, z):
@@ -227,7 +231,8 @@ class Mixture(GaussianSum):
             :math:`F_n(\bar d)`, shape of ``d``.
         """
         d = as_float_array(d, "d", allow_empty=True)
-        return mixture_moment(d, check_order(order), *self._components)
+        n = check_order(order)
+        return self._checked_moment(lambda x: mixture_moment(x, n, *self._components), d, n)
 
 
 @dataclass(frozen=True)

@@ -41,8 +41,8 @@ from typing import ClassVar
 import numpy as np
 from scipy import special
 
-from .._validation import as_float_array, check_scalar_range
-from .base import SF_FLOOR, TAIL, HeightDistribution, check_order, gw_moment_quadrature
+from .._validation import as_float_array, check_finite_result, check_scalar_range, check_scalar_real
+from .base import SF_FLOOR, TAIL, HeightDistribution, check_derivative_order, check_order, gw_moment_quadrature
 
 __all__ = ["PearsonIII", "pearson3_moment", "stirling_error", "SKEW_RANGE", "SKEW_MIN"]
 
@@ -185,8 +185,7 @@ class PearsonIII(HeightDistribution):
 
     def pdf_derivative(self, z, order: int):
         """:math:`\\phi' = \\phi L_1`, :math:`\\phi'' = \\phi(L_1^2 + L_2)` with the log-derivatives above."""
-        if order not in (1, 2):
-            raise ValueError(f"order must be 1 or 2, got {order}")
+        order = check_derivative_order(order)
         z = np.asarray(z, dtype=float)
         t, inside = self._t(z)
         L1 = -(z + 0.5 * self.skew) / (1.0 + t)
@@ -231,8 +230,8 @@ class PearsonIII(HeightDistribution):
         d = as_float_array(d, "d", allow_empty=True)
         n = check_order(order)
         if self.skew > 0 and self.k <= 16.0 and abs(self.k - round(self.k)) < 1e-12:
-            return pearson3_moment(d, n, self.skew)
-        return gw_moment_quadrature(self, d, n)
+            return self._checked_moment(lambda x: _pearson3_form(x, n, self.skew), d, n)
+        return self._checked_moment(lambda x: gw_moment_quadrature(self, x, n), d, n)
 
 
 def pearson3_moment(d, order: float, skew: float):
@@ -249,29 +248,46 @@ def pearson3_moment(d, order: float, skew: float):
 
     Parameters
     ----------
-    d : ndarray
+    d : array_like
         Separations (any shape), finite.
     order : float
-        :math:`n > -1`.
+        :math:`-1 < n \le` :data:`~asperity.heights.base.MAX_ORDER`.
     skew : float
-        Skewness :math:`0 < Sk \le 2`.
+        Skewness, :data:`SKEW_MIN` :math:`\le Sk \le 2`.
 
     Returns
     -------
     ndarray
         :math:`F_n(\bar d)`, shape of ``d``.
 
+    Raises
+    ------
+    ValueError
+        If ``d`` is not real and finite, ``order`` or ``skew`` out of range, or the form
+        leaves double precision (:meth:`PearsonIII.moment` then integrates instead).
+
     References
     ----------
     Abramowitz & Stegun 13.2.5; Johnson, Kotz & Balakrishnan (1994), Ch. 17.
     """
-    d = np.asarray(d, dtype=float)
-    n, s = float(order), float(skew)
+    d = as_float_array(d, "d", allow_empty=True)
+    n = check_order(order)
+    s = check_scalar_real(skew, "skew")
+    if not SKEW_MIN <= s <= 2.0:
+        raise ValueError(f"skew must lie in [{SKEW_MIN:g}, 2] (this closed form is for positive skewness), "
+                         f"got {skew!r}")
+    with np.errstate(all="ignore"):
+        out = _pearson3_form(d, n, s)
+    return check_finite_result(out, f"the Pearson III moment of order {n:g}", d=d, skew=s)
+
+
+def _pearson3_form(d, n, s):
+    """The closed form of :func:`pearson3_moment` for checked arrays (any warnings to the caller)."""
     k, th = 4.0 / (s * s), 0.5 * s
     h = d + 2.0 / s
     out = np.full(h.shape, math.exp(special.gammaln(n + k) - special.gammaln(k)) * th**n)
     up, down = h > 0, h < 0
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         hu = np.where(up, h, 1.0)
         log_pre = (n + k) * np.log(hu) - hu / th - special.gammaln(k) - k * math.log(th) + special.gammaln(n + 1)
         out = np.where(up, np.exp(log_pre) * special.hyperu(n + 1.0, n + k + 1.0, hu / th), out)

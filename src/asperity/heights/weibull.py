@@ -40,7 +40,7 @@ from scipy import optimize, special
 
 from .._validation import check_scalar_range
 from ..quadrature import gauss_legendre
-from .base import SF_FLOOR, TAIL, HeightDistribution
+from .base import SF_FLOOR, TAIL, HeightDistribution, check_derivative_order
 
 __all__ = ["Weibull", "weibull_skewness", "weibull_shape", "SKEW_RANGE", "SHAPE_RANGE"]
 
@@ -191,18 +191,18 @@ class Weibull(HeightDistribution):
 
     def pdf_derivative(self, z, order: int):
         """First or second derivative of the density (0 below the support)."""
-        if order not in (1, 2):
-            raise ValueError(f"order must be 1 or 2, got {order}")
+        order = check_derivative_order(order)
         w = self._w(z)
         inside = w > 0
         wp = np.where(inside, w, 1.0)
         c, s = self.c, self.sd_w
         L1 = s * ((c - 1.0) / wp - c * wp ** (c - 1.0))
         f = self.pdf(z)
+        live = inside & (f > 0)  # where f underflows, so do its derivatives (w^c ~ 745 there)
         if order == 1:
-            return np.where(inside, f * L1, 0.0)
+            return np.where(live, f * L1, 0.0)
         L2 = -(s * s) * ((c - 1.0) / wp**2 + c * (c - 1.0) * wp ** (c - 2.0))
-        return np.where(inside, f * (L1 * L1 + L2), 0.0)
+        return np.where(live, f * (L1 * L1 + L2), 0.0)
 
     def sf(self, z):
         """Survival function :math:`e^{-w^c}` (1 below the support)."""
