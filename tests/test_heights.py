@@ -112,3 +112,19 @@ def test_the_closed_forms_check_their_inputs():
     d = np.array([-2.0, 0.3, 3.0])
     np.testing.assert_allclose(pearson3_moment(d, 1.5, 1.0), gw_moment_quadrature(PearsonIII(1.0), d, 1.5),
                                rtol=1e-11)
+
+
+@pytest.mark.parametrize("dist", [Gaussian(), Exponential(), PearsonIII(2.0), PearsonIII(-0.5), Weibull(0.5),
+                                  Weibull(-0.8), Johnson(0.5, 4.0), Johnson(-0.5, 3.2), Mixture()], ids=repr)
+def test_densities_far_out_are_their_limits_and_nan_is_refused(dist):
+    """A review: overflow warnings (z^2, w^c) and NaN (0 * inf) far out; NaN heights passed through."""
+    z = np.array([-1e308, -1e19, 1e19, 1e308])
+    np.testing.assert_array_equal(dist.pdf(z), 0.0)
+    np.testing.assert_array_equal(dist.sf(z), [1.0, 1.0, 0.0, 0.0])
+    for order in (1, 2):
+        np.testing.assert_array_equal(dist.pdf_derivative(z, order), 0.0)
+    for method, args in (("pdf", ()), ("sf", ()), ("pdf_derivative", (1,))):
+        with pytest.raises(ValueError, match="^z must be finite"):
+            getattr(dist, method)(np.array([0.0, np.nan]), *args)
+        with pytest.raises(ValueError, match="^z must be"):
+            getattr(dist, method)("1", *args)
