@@ -112,7 +112,7 @@ def cgp_shift(p, area, E_star):
     Examples
     --------
     >>> round(cgp_shift(1e6, 1e-6, 1e11) * 1e9, 4)  # 1 MPa over 1 mm^2 on E* = 100 GPa: nm
-    9.5779
+    9.578
     """
     p = as_float_array(p, "p")
     area = check_scalar_positive(area, "area", "m^2")

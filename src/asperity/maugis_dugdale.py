@@ -6,7 +6,7 @@ The Dugdale cohesive zone (constant tensile stress :math:`\sigma_0` over a gap
 
 .. math::
     A = a\Big(\frac{K}{\pi w R^2}\Big)^{1/3},\quad
-    P = \frac{P}{\pi w R},\quad
+    \bar P = \frac{P}{\pi w R},\quad
     \Delta = u\Big(\frac{K^2}{\pi^2 w^2 R}\Big)^{1/3},\quad
     \lambda = 2\sigma_0\Big(\frac{R}{\pi w K^2}\Big)^{1/3},\quad K=\tfrac43 E^*,
 
