@@ -600,3 +600,28 @@ def test_numpy_values_are_shown_plainly_in_messages():
         with pytest.raises(ValueError) as err:
             call()
         assert needle in str(err.value) and "array(" not in str(err.value) and "np.float64" not in str(err.value)
+
+
+def test_shapes_that_do_not_broadcast_are_named(tmp):
+    """Every pair of numeric parameters of every valid call, given shapes (3,) and (4,): a
+    ValueError or TypeError naming one of them (a review found NumPy's bare 'operands could
+    not be broadcast' in the Jackson-Green and Nix-Gao functions), never a result."""
+    import itertools
+    import numbers
+
+    problems = []
+    for target in TARGETS:
+        if target == "asperity.studies.report.reproduce":
+            continue
+        func, kwargs, _ = _target(tmp, target)
+        kwargs = kwargs()
+        nums = [k for k, v in kwargs.items() if isinstance(v, numbers.Real) and not isinstance(v, bool)]
+        for a, b in itertools.combinations(nums, 2):
+            call = {**kwargs, a: np.full(3, kwargs[a]), b: np.full(4, kwargs[b])}
+            try:
+                func(**call)
+                problems.append(f"{target}({a}: 3, {b}: 4) gave a result")
+            except (ValueError, TypeError) as err:
+                if a not in str(err) and b not in str(err):
+                    problems.append(f"{target}({a}: 3, {b}: 4): {err}")
+    assert not problems, "\n".join(problems)

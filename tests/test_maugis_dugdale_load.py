@@ -109,6 +109,7 @@ def test_normal_force_limits():
     ({"R": R, "w": W, "E_star": E_STAR, "lam": 1e13}, "lam"),
     ({"R": [R, R], "w": [W, W, W], "E_star": E_STAR, "lam": 1.0}, "^R, w, E_star, lam must have shapes that broadcast"),
     ({"R": R, "w": W, "E_star": E_STAR, "lam": [1.0, 1e13]}, "^lam"),
+    ({"R": 1e-300, "w": W, "E_star": E_STAR, "sigma0": 1e9}, "^R, w, E_star, sigma0 give the Maugis parameter"),
     ({"R": R, "w": [W, W], "E_star": E_STAR, "sigma0": [1e9, 1e9, 1e9]}, "^R, w, E_star, sigma0 must have shapes"),
 ])
 def test_bad_physical_input(kwargs, match):

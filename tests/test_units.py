@@ -233,3 +233,32 @@ def test_a_product_that_underflows_is_refused(text, unit):
                                          ("2\u00c5", 2e-10)])
 def test_zeros_that_are_meant_and_the_angstrom_spellings(text, value):
     assert parse_quantity(text, "m", "x") == pytest.approx(value, rel=1e-15, abs=0.0)
+
+
+def test_every_si_function_takes_quantities():
+    """A review: md_lambda, persson/bgt's p, cgp_shift's p, plasticity_index and the groups
+    refused pint quantities ('a number in the model's own units') though documented in SI."""
+    import warnings
+
+    from asperity.groups import adhesion_gamma, regime_beta, roughness_alpha
+    from asperity.interaction import cgp_shift
+    from asperity.maugis_dugdale import md_lambda
+    from asperity.persson import bgt_area_fraction, persson_area_fraction
+    from asperity.plasticity import plasticity_index
+
+    J_m2 = u.J / u.m**2
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        pairs = [
+            (md_lambda(20 * u.nm, 0.1 * J_m2, 100 * u.GPa, 1 * u.GPa), md_lambda(20e-9, 0.1, 100e9, 1e9)),
+            (persson_area_fraction(100 * u.MPa, 100 * u.GPa, 0.1), persson_area_fraction(1e8, 1e11, 0.1)),
+            (bgt_area_fraction(100 * u.MPa, 100 * u.GPa, 0.1), bgt_area_fraction(1e8, 1e11, 0.1)),
+            (cgp_shift(1 * u.MPa, 1 * u.mm**2, 100 * u.GPa), cgp_shift(1e6, 1e-6, 1e11)),
+            (plasticity_index(100 * u.GPa, 1 * u.GPa, 4 * u.nm, 1 * u.um), plasticity_index(1e11, 1e9, 4e-9, 1e-6)),
+            (adhesion_gamma(0.1 * J_m2, 100 * u.GPa, 0.25 * u.nm), adhesion_gamma(0.1, 1e11, 0.25e-9)),
+            (regime_beta(4 * u.nm, 1 * u.um, 0.25 * u.nm), regime_beta(4e-9, 1e-6, 0.25e-9)),
+            (roughness_alpha(4 * u.nm, 1 * u.um), roughness_alpha(4e-9, 1e-6)),
+        ]
+    for got, expected in pairs:
+        np.testing.assert_allclose(got, expected, rtol=1e-14)
+    assert adhesion_gamma(0.0, 1e11, 0.25e-9) == 0.0  # no adhesion is gamma = 0, as its inverse says

@@ -194,7 +194,11 @@ class HurtadoKim:
 
     def force(self, a_bar):
         """Friction force :math:`F_f/(G^* b^2)` of one asperity (Eq 4, with pi)."""
-        return np.pi * self.stress(a_bar) * np.asarray(a_bar, dtype=float) ** 2
+        a = as_float_array(a_bar, "a_bar", allow_empty=True)
+        stress = self.stress(a)
+        with np.errstate(all="ignore"):
+            force = np.pi * stress * a**2
+        return check_finite_result(force, "the friction force", a_bar=a)
 
     def breakpoints(self) -> tuple[float, ...]:
         return (self.a1, self.a2)
@@ -216,7 +220,11 @@ class ConstantShear:
 
     def force(self, a_bar):
         """Friction force :math:`F_f/(G^* b^2) = \\pi\\tau\\bar a^2`."""
-        return np.pi * self.stress(a_bar) * np.asarray(a_bar, dtype=float) ** 2
+        a = as_float_array(a_bar, "a_bar", allow_empty=True)
+        stress = self.stress(a)
+        with np.errstate(all="ignore"):
+            force = np.pi * stress * a**2
+        return check_finite_result(force, "the friction force", a_bar=a)
 
     def breakpoints(self) -> tuple[float, ...]:
         return ()

@@ -70,16 +70,17 @@ def roughness_alpha(sigma, R):
 
     Parameters
     ----------
-    sigma : array_like
+    sigma : array_like or pint.Quantity
         Standard deviation of asperity (summit) heights, > 0.
-    R : array_like
-        Asperity radius of curvature, > 0 (same unit as ``sigma``).
+    R : array_like or pint.Quantity
+        Asperity radius of curvature, > 0 (same unit as ``sigma``; quantities are converted
+        to metres).
 
     References
     ----------
     Adams et al., Eq (7).
     """
-    sigma, R = check_positive(sigma, "sigma"), check_positive(R, "R")
+    sigma, R = check_positive(to_si(sigma, "m", "sigma"), "sigma"), check_positive(to_si(R, "m", "R"), "R")
     check_broadcast(sigma=sigma, R=R)
     with np.errstate(all="ignore"):
         return check_finite_result(np.sqrt(sigma / R), "alpha", sigma=sigma, R=R)
@@ -90,14 +91,15 @@ def regime_beta(sigma, R, b):
 
     Parameters
     ----------
-    sigma, R, b : array_like
-        Summit height deviation, summit radius and Burgers vector, > 0 (one length unit).
+    sigma, R, b : array_like or pint.Quantity
+        Summit height deviation, summit radius and Burgers vector, > 0 (numbers in one length
+        unit; quantities are converted to metres).
 
     References
     ----------
     Adams et al., Eq (7).
     """
-    sigma, R, b = check_positive(sigma, "sigma"), check_positive(R, "R"), check_positive(b, "b")
+    sigma, R, b = (check_positive(to_si(x, "m", n), n) for x, n in ((sigma, "sigma"), (R, "R"), (b, "b")))
     check_broadcast(sigma=sigma, R=R, b=b)
     with np.errstate(all="ignore"):
         return check_finite_result(np.sqrt(sigma * R) / b, "beta", sigma=sigma, R=R, b=b)
@@ -108,18 +110,19 @@ def adhesion_gamma(w, E_star, b):
 
     Parameters
     ----------
-    w : array_like
-        Work of adhesion (J/m^2), > 0.
-    E_star : array_like
+    w : array_like or pint.Quantity
+        Work of adhesion (J/m^2), >= 0 (0: no adhesion, gamma = 0).
+    E_star : array_like or pint.Quantity
         Composite Young's modulus (Pa), > 0.
-    b : array_like
+    b : array_like or pint.Quantity
         Burgers vector (m), > 0.
 
     References
     ----------
     Adams et al., Eq (16).
     """
-    w, E_star, b = check_positive(w, "w"), check_positive(E_star, "E_star"), check_positive(b, "b")
+    w = check_nonnegative(to_si(w, "J/m^2", "w"), "w")
+    E_star, b = check_positive(to_si(E_star, "Pa", "E_star"), "E_star"), check_positive(to_si(b, "m", "b"), "b")
     check_broadcast(w=w, E_star=E_star, b=b)
     with np.errstate(all="ignore"):
         return check_finite_result(w / (E_star * b), "gamma", w=w, E_star=E_star, b=b)

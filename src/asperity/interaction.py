@@ -64,6 +64,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._validation import as_float_array, check_finite_result, check_poisson, check_scalar_positive, scalar
+from .units import to_si
 
 __all__ = [
     "CGP_MEAN_COMPLIANCE",
@@ -114,7 +115,7 @@ def cgp_shift(p, area, E_star):
     >>> round(cgp_shift(1e6, 1e-6, 1e11) * 1e9, 4)  # 1 MPa over 1 mm^2 on E* = 100 GPa: nm
     9.578
     """
-    p = as_float_array(p, "p")
+    p = as_float_array(to_si(p, "Pa", "p"), "p")
     area = check_scalar_positive(area, "area", "m^2")
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
     with np.errstate(all="ignore"):

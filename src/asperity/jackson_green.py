@@ -58,7 +58,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_finite_result, check_interval, check_nonnegative, check_positive
+from ._validation import check_broadcast, check_finite_result, check_interval, check_nonnegative, check_positive
 from .jackson_green_hardness import HG_LIMIT, HG_POWER, HG_RATE, jg_hardness_ratio, jg_yield_from_hardness
 
 __all__ = [
@@ -198,6 +198,7 @@ def jg_critical_interference(S_y, E_star, R, nu):
     """
     C = jg_yield_coefficient(nu)
     S_y, E_star, R = check_positive(S_y, "S_y"), check_positive(E_star, "E_star"), check_positive(R, "R")
+    check_broadcast(S_y=S_y, E_star=E_star, R=R, nu=C)
     with np.errstate(all="ignore"):
         omega_c = (0.5 * np.pi * C * S_y / E_star) ** 2 * R
     return check_finite_result(omega_c, "the critical interference", S_y=S_y, E_star=E_star, R=R)
@@ -244,6 +245,7 @@ def jg_critical_load(S_y, E_star, R, nu):
     """
     C = jg_yield_coefficient(nu)
     S_y, E_star, R = check_positive(S_y, "S_y"), check_positive(E_star, "E_star"), check_positive(R, "R")
+    check_broadcast(S_y=S_y, E_star=E_star, R=R, nu=C)
     with np.errstate(all="ignore"):
         P_c = (4.0 / 3.0) * (R / E_star) ** 2 * (0.5 * np.pi * C * S_y) ** 3
     return check_finite_result(P_c, "the critical load", S_y=S_y, E_star=E_star, R=R)
@@ -286,8 +288,9 @@ def jg_critical_area(S_y, E_star, R, nu):
     ----------
     Jackson & Green (2005), critical area.
     """
+    omega_c = jg_critical_interference(S_y, E_star, R, nu)  # checks and broadcasts the inputs
     with np.errstate(over="ignore"):
-        A_c = np.pi * check_positive(R, "R") * jg_critical_interference(S_y, E_star, R, nu)
+        A_c = np.pi * check_positive(R, "R") * omega_c
     return check_finite_result(A_c, "the critical area", S_y=S_y, E_star=E_star, R=R)
 
 
@@ -363,4 +366,6 @@ def jg_radius_ratio(area_ratio, e_y, nu):
     Jackson & Green (2005), contact radius in the geometric hardness.
     """
     ratio = check_nonnegative(area_ratio, "area_ratio")
-    return 0.5 * np.pi * jg_yield_coefficient(nu) * jg_check_yield_strain(e_y) * np.sqrt(ratio)
+    C, e_y = jg_yield_coefficient(nu), jg_check_yield_strain(e_y)
+    check_broadcast(area_ratio=ratio, e_y=e_y, nu=C)
+    return 0.5 * np.pi * C * e_y * np.sqrt(ratio)

@@ -184,6 +184,7 @@ def jg_load_fit(omega_star, e_y, nu):
     """
     w = _omega_star(omega_star)
     C = jg_yield_coefficient(nu)
+    check_broadcast(omega_star=w, e_y=jg_check_yield_strain(e_y), nu=C)
     if w.size == 0:
         return np.zeros(w.shape)
     hardness = jg_hardness_ratio(jg_radius_ratio(jg_area(w, e_y), e_y, nu))
@@ -245,7 +246,9 @@ def jg_load_transition(e_y, nu):
     Jackson & Green (2005), load and the transition at 1.9; this package's handling of the
     load's jump there (docs/plasticity.md).
     """
-    e_y, nu = np.broadcast_arrays(jg_check_yield_strain(e_y), jg_check_poisson(nu))
+    e_y, nu = jg_check_yield_strain(e_y), jg_check_poisson(nu)
+    check_broadcast(e_y=e_y, nu=nu)
+    e_y, nu = np.broadcast_arrays(e_y, nu)
     out = np.array([_crossing(float(e), float(n)) for e, n in zip(e_y.ravel(), nu.ravel(), strict=True)])
     return out.reshape(e_y.shape)
 

@@ -60,6 +60,7 @@ from .maugis_dugdale_branch import (
     md_pull_off,
     md_solve,
 )
+from .units import to_si
 
 __all__ = ["LAMBDA_C", "BranchPoint", "md_radius", "md_load", "md_penetration", "md_curve", "md_t_of_radius",
            "md_branch_end", "md_solve", "md_pull_off", "md_lambda", "LAMBDA_RANGE", "T_RANGE", "A_MAX",
@@ -359,10 +360,10 @@ def md_lambda(R, w, E_star, sigma0):
     ----------
     Maugis (1992); Adams et al., Eq (14).
     """
-    R = check_positive(R, "R")
-    w = check_positive(w, "w")
-    E_star = check_positive(E_star, "E_star")
-    sigma0 = check_positive(sigma0, "sigma0")
+    R = check_positive(to_si(R, "m", "R"), "R")
+    w = check_positive(to_si(w, "J/m^2", "w"), "w")
+    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
+    sigma0 = check_positive(to_si(sigma0, "Pa", "sigma0"), "sigma0")
     check_broadcast(R=R, w=w, E_star=E_star, sigma0=sigma0)
     with np.errstate(all="ignore"):
         K = (4.0 / 3.0) * E_star

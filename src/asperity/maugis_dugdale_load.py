@@ -36,6 +36,7 @@ from __future__ import annotations
 import numpy as np
 
 from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, scalar
+from ._validation_files import short_repr
 from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
 from .maugis_units import penetration_in_maugis_units
 from .units import to_si
@@ -174,6 +175,12 @@ def _scales(R, w, E_star, sigma0, lam):
         raise ValueError("give exactly one of sigma0 (Dugdale stress, Pa) and lam (Maugis parameter)")
     if lam is None:
         lam = md_lambda(R, w, E_star, to_si(sigma0, "Pa", "sigma0"))
+        try:
+            check_lambda(lam)
+        except ValueError:
+            raise ValueError(f"R, w, E_star, sigma0 give the Maugis parameter lam = {short_repr(lam)}, outside "
+                             "[1e-12, 1e12] (lam = 2 sigma0 (R/(pi w K^2))^(1/3)): give values of physical size, "
+                             "or use asperity.dmt (small lam) or asperity.jkr (large lam)") from None
     lam = check_lambda(lam)
     check_broadcast(R=R, w=w, E_star=E_star, **({"lam": lam} if sigma0 is None else {}))
     return R, w, E_star, lam

@@ -52,7 +52,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_finite_result, check_nonnegative, check_positive
+from ._validation import check_broadcast, check_finite_result, check_nonnegative, check_positive
 
 __all__ = ["ng_hardness", "ng_scaled_interference", "ng_interference", "ng_critical_interference"]
 
@@ -93,6 +93,7 @@ def ng_hardness(h, H0, h_star):
     """
     h = check_positive(h, "h")
     H0_, hs = check_positive(H0, "H0"), check_nonnegative(h_star, "h_star")
+    check_broadcast(h=h, H0=H0_, h_star=hs)
     with np.errstate(all="ignore"):
         out = H0_ * np.sqrt(1.0 + hs / h)
     return check_finite_result(out, "the hardness", h=h, H0=H0_, h_star=hs)
@@ -139,6 +140,7 @@ def ng_scaled_interference(omega, omega_c0, h_star):
     w = check_nonnegative(omega, "omega")
     w0 = check_positive(omega_c0, "omega_c0")
     hs = check_nonnegative(h_star, "h_star")
+    check_broadcast(omega=w, omega_c0=w0, h_star=hs)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         out = np.where(w > 0, w / (w0 * (1.0 + hs / np.where(w > 0, w, 1.0))), 0.0)  # w^2/(w0 (w + h*))
     return check_finite_result(out, "omega*", omega=w, omega_c0=w0, h_star=hs)
@@ -180,6 +182,7 @@ def ng_interference(omega_star, omega_c0, h_star):
     """
     ws, w0, hs = (check_nonnegative(omega_star, "omega_star"), check_positive(omega_c0, "omega_c0"),
                   check_nonnegative(h_star, "h_star"))
+    check_broadcast(omega_star=ws, omega_c0=w0, h_star=hs)
     with np.errstate(all="ignore"):
         x = ws * w0
         out = 0.5 * (x + np.sqrt(x * x + 4.0 * x * hs))

@@ -45,6 +45,7 @@ import numpy as np
 from scipy import special
 
 from ._validation import as_float_array, check_finite_result, check_scalar_positive
+from .units import to_si
 
 __all__ = ["KAPPA_PERSSON", "KAPPA_BGT", "persson_area_fraction", "bgt_area_fraction", "rms_slope"]
 
@@ -55,7 +56,7 @@ KAPPA_BGT = math.sqrt(2.0 * math.pi)
 
 
 def _pressure(p):
-    p = as_float_array(p, "p", allow_empty=True)
+    p = as_float_array(to_si(p, "Pa", "p"), "p", allow_empty=True)
     if np.any(p < 0):
         raise ValueError(f"p (nominal pressure) must be >= 0 Pa, got min {p.min():g}")
     return p

@@ -47,9 +47,11 @@ from ._validation import (
     check_positive,
     check_scalar_positive,
 )
+from ._validation_files import short_repr
 from ._warnings import AsperityWarning
 from .elastic_plastic import LAWS, critical_penetration, plastic_fraction
 from .materials import Material
+from .units import to_si
 
 __all__ = ["PlasticityWarning", "PLASTIC_THRESHOLD", "plasticity_index", "plastic_share", "resolve_plasticity",
            "check_yield", "ContactPlasticity"]
@@ -99,8 +101,8 @@ def plasticity_index(E_star, H, sigma_s, R):
     ----------
     Greenwood & Williamson (1966), the plasticity index.
     """
-    E_star, H = check_positive(E_star, "E_star"), check_positive(H, "H")
-    sigma_s, R = check_positive(sigma_s, "sigma_s"), check_positive(R, "R")
+    E_star, H = check_positive(to_si(E_star, "Pa", "E_star"), "E_star"), check_positive(to_si(H, "Pa", "H"), "H")
+    sigma_s, R = check_positive(to_si(sigma_s, "m", "sigma_s"), "sigma_s"), check_positive(to_si(R, "m", "R"), "R")
     check_broadcast(E_star=E_star, H=H, sigma_s=sigma_s, R=R)
     with np.errstate(all="ignore"):
         out = E_star / H * np.sqrt(sigma_s / R)
@@ -129,7 +131,8 @@ def plastic_share(plastic, contacts):
     Raises
     ------
     ValueError
-        If an input is not real and finite, or negative.
+        If an input is not real and finite, or negative, the shapes do not broadcast, or
+        ``plastic`` exceeds ``contacts``.
 
     Examples
     --------
@@ -142,9 +145,15 @@ def plastic_share(plastic, contacts):
     """
     plastic = check_nonnegative(plastic, "plastic")
     contacts = check_nonnegative(contacts, "contacts")
-    with np.errstate(divide="ignore", invalid="ignore"):
+    check_broadcast(plastic=plastic, contacts=contacts)
+    # the two integrals round apart (all plastic is 1, not 1 + 1e-16); beyond rounding, more
+    # plastic contacts than contacts is a mistake
+    if np.any(plastic > contacts * (1.0 + 1e-6)):
+        raise ValueError("plastic (contacts beyond yield) must not exceed contacts, got "
+                         f"plastic = {short_repr(plastic)} for contacts = {short_repr(contacts)}")
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         share = np.where(contacts > 0, plastic / np.where(contacts > 0, contacts, 1.0), 0.0)
-    return np.minimum(share, 1.0)  # the two integrals round apart: all plastic is 1, not 1 + 1e-16
+    return np.minimum(share, 1.0)
 
 
 def resolve_plasticity(material: Material, plasticity, hardness, size_effect, h_star):
