@@ -625,3 +625,29 @@ def test_shapes_that_do_not_broadcast_are_named(tmp):
                 if a not in str(err) and b not in str(err):
                     problems.append(f"{target}({a}: 3, {b}: 4): {err}")
     assert not problems, "\n".join(problems)
+
+
+def test_scalar_inputs_give_scalars_not_0d_arrays(tmp):
+    """As a ufunc does: a review found 0-d arrays from a third of the functions (md_solve,
+    jg_area, ng_*, mu, the moments, ...), NumPy scalars from the rest."""
+    import numbers
+
+    validators = ("check_", "jg_check_")
+    found = []
+    for target in TARGETS:
+        if target.endswith("reproduce") or target.rsplit(".", 1)[-1].startswith(validators):
+            continue
+        func, kwargs, _ = _target(tmp, target)
+        kwargs = kwargs()
+        scalar = {k: (v[0] if isinstance(v, list) and v and isinstance(v[0], numbers.Real) else v)
+                  for k, v in kwargs.items()}
+        if scalar == kwargs:
+            continue  # no list to make scalar
+        try:
+            result = func(**scalar)
+        except (ValueError, TypeError):
+            continue  # a parameter that must be a list
+        parts = result if isinstance(result, tuple) else (result,)
+        if any(isinstance(p, np.ndarray) and p.ndim == 0 for p in parts):
+            found.append(target)
+    assert not found, f"0-d arrays from scalar inputs: {found}"

@@ -140,6 +140,37 @@ def test_mu_and_pressure_undefined_cases():
 def test_shape_preserved():
     d = np.linspace(0, 2, 6).reshape(2, 3)
     assert normal_force(d, 0.01, 100.0).shape == (2, 3)
+    # a scalar separation gives a NumPy scalar, as a ufunc does (a review: 0-d arrays before)
+    assert type(normal_force(0.5, 0.01, 100.0)) is np.float64
+
+
+@pytest.mark.parametrize("func", [contact_fraction, normal_force, friction_force, real_contact_area])
+def test_the_integrals_broadcast_over_the_parameters(func):
+    """d (4,), alpha (3, 1), gamma (4,), nu and h/b scalars or arrays: the loop of scalar calls
+    (a review: alpha, beta, gamma, nu, h/b were scalar-only, so Fig 3's sweep needed a loop)."""
+    d = np.array([-1.0, 0.0, 1.0, 2.5])
+    alpha = np.array([[0.01], [0.02], [0.05]])
+    gamma = np.array([0.0, 1e-4, 1e-3, 1e-3])
+    nu = np.array([0.25, 0.3, 0.3, 0.35])
+    got = func(d, alpha, 1000.0, gamma, nu=nu, h_over_b=2.0)
+    assert got.shape == (3, 4)
+    for i, j in np.ndindex(got.shape):
+        expected = func(d[j], float(alpha[i, 0]), 1000.0, gamma[j], nu=nu[j], h_over_b=2.0)
+        assert got[i, j] == pytest.approx(float(expected), rel=1e-13, abs=1e-300)
+    assert func(0.0, [0.01, 0.02], [100.0, 1000.0]).shape == (2,)
+
+
+def test_parameters_that_do_not_broadcast_or_leave_their_range_are_named():
+    with pytest.raises(ValueError, match="^d, alpha, beta, gamma, nu, h_over_b must have shapes"):
+        normal_force([0.0, 1.0], [0.01, 0.02, 0.03], 1000.0)
+    with pytest.raises(ValueError, match="^alpha must be"):
+        normal_force([0.0, 1.0], [0.01, -0.02], 1000.0)
+    with pytest.raises(ValueError, match="^gamma must be finite"):
+        normal_force(0.0, 0.01, 1000.0, [1e-3, np.nan])
+    with pytest.raises(ValueError, match="^nu"):
+        normal_force(0.0, 0.01, 1000.0, nu=[0.3, 0.7])
+    with pytest.raises(ValueError, match="^P, area, nu must have shapes"):
+        mean_pressure([1.0, 2.0], [1.0, 2.0], nu=[0.3, 0.3, 0.3])
 
 
 class PlainGaussian(asperity.HeightDistribution):

@@ -44,6 +44,7 @@ __all__ = [
     "check_scalar_real",
     "check_broadcast",
     "scalar",
+    "ufunc_result",
 ]
 
 
@@ -317,6 +318,14 @@ def check_positive_scaled(value, name: str, factor: float):
     with np.errstate(all="ignore"):
         out = factor * value
     return check_finite_result(out, f"{factor:g} {name}", **{name: value})
+
+
+def ufunc_result(result):
+    """``result`` as a ufunc returns it: a 0-d array becomes its NumPy scalar (``np.float64``),
+    other arrays and non-arrays are unchanged (tuples element by element)."""
+    if isinstance(result, tuple):
+        return tuple(ufunc_result(r) for r in result)
+    return result[()] if isinstance(result, np.ndarray) and result.ndim == 0 else result
 
 
 def check_finite_result(result, what: str, **inputs):

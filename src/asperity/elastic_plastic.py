@@ -65,6 +65,7 @@ from ._validation import (
     check_finite_result,
     check_scalar_sign,
     scalar,
+    ufunc_result,
 )
 from .asperity_law import AsperityLaw, ModelParameters
 from .heights import GAUSSIAN, HeightDistribution
@@ -179,7 +180,7 @@ def plastic_fraction(d, u_c, heights: HeightDistribution = GAUSSIAN):
     u_c = check_scalar_sign(u_c, "u_c", positive=True)
     if not isinstance(heights, HeightDistribution):
         raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
-    return np.asarray(heights.sf(d + u_c), dtype=float)
+    return ufunc_result(np.asarray(heights.sf(d + u_c), dtype=float))
 
 
 @dataclass(frozen=True)

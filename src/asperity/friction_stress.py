@@ -27,7 +27,7 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
-from ._validation import as_float_array, check_finite_result, check_positive, check_scalar_positive
+from ._validation import as_float_array, check_finite_result, check_positive, check_scalar_positive, ufunc_result
 
 __all__ = [
     "TAU_F1",
@@ -216,7 +216,7 @@ class ConstantShear:
     def stress(self, a_bar):
         """The constant stress, broadcast to the shape of ``a_bar``."""
         a = as_float_array(a_bar, "a_bar", allow_empty=True)
-        return np.full_like(a, self.tau)
+        return ufunc_result(np.full_like(a, self.tau))
 
     def force(self, a_bar):
         """Friction force :math:`F_f/(G^* b^2) = \\pi\\tau\\bar a^2`."""

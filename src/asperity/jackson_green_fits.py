@@ -38,7 +38,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import optimize
 
-from ._validation import as_float_array, check_broadcast, check_finite_result
+from ._validation import as_float_array, check_broadcast, check_finite_result, ufunc_result
 from .jackson_green import (
     OMEGA_T,
     jg_area_exponent,
@@ -140,7 +140,7 @@ def jg_area(omega_star, e_y):
     w, e_y = np.broadcast_arrays(_omega_star(omega_star), jg_check_yield_strain(e_y))
     if w.size == 0:  # no interference: nothing to evaluate (e_y broadcast to empty is not "no e_y")
         return np.zeros(w.shape)
-    return np.where(w <= OMEGA_T, w, jg_area_fit(np.maximum(w, OMEGA_T), e_y))
+    return ufunc_result(np.where(w <= OMEGA_T, w, jg_area_fit(np.maximum(w, OMEGA_T), e_y)))
 
 
 def jg_load_fit(omega_star, e_y, nu):
@@ -250,7 +250,7 @@ def jg_load_transition(e_y, nu):
     check_broadcast(e_y=e_y, nu=nu)
     e_y, nu = np.broadcast_arrays(e_y, nu)
     out = np.array([_crossing(float(e), float(n)) for e, n in zip(e_y.ravel(), nu.ravel(), strict=True)])
-    return out.reshape(e_y.shape)
+    return ufunc_result(out.reshape(e_y.shape))
 
 
 def jg_load(omega_star, e_y, nu):
@@ -302,4 +302,4 @@ def jg_load(omega_star, e_y, nu):
     with np.errstate(over="ignore", invalid="ignore"):
         fit = jg_load_fit(np.maximum(w, cross), e_y, nu)
         out = np.where(w <= cross, w**1.5, fit)
-    return check_finite_result(out, "P/P_c", omega_star=w)
+    return ufunc_result(check_finite_result(out, "P/P_c", omega_star=w))

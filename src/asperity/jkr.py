@@ -28,6 +28,7 @@ from ._validation import (
     check_positive,
     check_positive_scaled,
     check_radius,
+    ufunc_result,
 )
 from .maugis_units import penetration_in_maugis_units
 from .units import to_si
@@ -385,14 +386,14 @@ def jkr_normal_force(delta, *, R, w, E_star):
         F = np.where(hertz, K * np.sqrt(R) * np.maximum(delta, 0.0)**1.5, 0.0)
     check_finite_result(F, "the Hertz force", delta=delta, R=R, E_star=E_star)
     if np.all(hertz):
-        return F
+        return ufunc_result(F)
     adhesive = ~hertz
     E = as_float_array(to_si(E_star, "Pa", "E_star"), "E_star")
     delta_a, R_a, w_a, E_a = (np.broadcast_to(x, shape)[adhesive] for x in (delta, R, w, E))
     delta_hat, unit = penetration_in_maugis_units(delta_a, R=R_a, w=w_a, E_star=E_a)
     with np.errstate(all="ignore"):
         F[adhesive] = jkr_solve(delta_hat)[1] * unit
-    return check_finite_result(F, "the JKR force", delta=delta, R=R, w=w, E_star=E_star)
+    return ufunc_result(check_finite_result(F, "the JKR force", delta=delta, R=R, w=w, E_star=E_star))
 
 
 def jkr_pull_off_force(*, R, w):

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import optimize
 
-from ._validation import as_float_array, check_positive, scalar
+from ._validation import as_float_array, check_positive, scalar, ufunc_result
 from ._validation_files import short_repr
 
 __all__ = ["LAMBDA_C", "LAMBDA_RANGE", "A_MAX", "DELTA_MAX", "BranchPoint", "check_lambda", "md_branch_end",
@@ -265,7 +265,7 @@ def md_solve(delta, lam):
                          f"from the end of the stable branch to DELTA_MAX; got "
                          f"values from {delta.min():g} to {delta.max():g}")
     t, A, P = _invert_penetration(delta, lam, end)
-    return A, P, t
+    return ufunc_result((A, P, t))
 
 
 def _inverse_variable(D, end):

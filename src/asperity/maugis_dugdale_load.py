@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, scalar
+from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, scalar, ufunc_result
 from ._validation_files import short_repr
 from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
 from .maugis_units import penetration_in_maugis_units
@@ -107,7 +107,7 @@ def md_solve_load(P, lam):
     t = _invert_load(P, lam, po)
     finite = np.isfinite(t)
     A, _, D = md_curve(np.where(finite, t, 1.0), lam)
-    return np.where(finite, A, po.A), np.where(finite, D, po.delta), t
+    return ufunc_result((np.where(finite, A, po.A), np.where(finite, D, po.delta), t))
 
 
 def _invert_load(P, lam, po):

@@ -14,16 +14,17 @@ area             :math:`A/(N\pi b^2) = \int\bar a^2\phi\,d\bar z`             Eq
 with :math:`\bar u = \bar z - \bar d`, from the end of the asperity's stable branch
 (:math:`\bar u = 0` for Hertz) to infinity.
 
-They are fast because the per-asperity law is tabulated once on fixed quadrature nodes in
-penetration (:class:`~asperity.tabulation.Tabulation`, re-exported here with
-:data:`D_MIN`, :data:`D_MAX` and :func:`check_separation`).
+They broadcast over the separation and the model's parameters like ufuncs.  They are fast
+because the per-asperity law is tabulated once on fixed quadrature nodes in penetration
+(:class:`~asperity.tabulation.Tabulation`, re-exported here with :data:`D_MIN`,
+:data:`D_MAX` and :func:`check_separation`).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_poisson
+from ._validation import as_float_array, check_broadcast, check_poisson, ufunc_result
 from .asperity_law import ModelParameters, check_law
 from .heights import GAUSSIAN, check_heights
 from .tabulation import D_MAX, D_MIN, Tabulation, check_separation
@@ -41,14 +42,39 @@ __all__ = [
     "check_separation",
 ]
 
-def _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights):
+#: The model's parameters over which the integrals broadcast (with the separation).
+_PARAMETERS = ("alpha", "beta", "gamma", "nu", "h_over_b")
+
+
+def _one_set(d, alpha, beta, gamma, nu, h_over_b, friction, heights):
+    """The four integrals at separations ``d`` for one parameter set (checked by ModelParameters)."""
     kwargs = {} if friction is None else {"friction": friction}
     params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
     check_heights(heights)
     law = check_law(None, params)
     d = check_separation(d, d_max=D_MAX - law.u_end)
     tab = Tabulation(params, float(d.min()), float(d.max()), heights, law=law)
-    return tab.evaluate(d), params
+    return tab.evaluate(d)
+
+
+def _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights, column):
+    """One column of the integrals, broadcast over ``d`` and the parameters like a ufunc: one
+    tabulation per distinct parameter set; a NumPy scalar for scalar inputs."""
+    values = dict(zip(_PARAMETERS, (alpha, beta, gamma, nu, h_over_b), strict=True))
+    if not any(isinstance(v, list | tuple) or (isinstance(v, np.ndarray) and v.ndim > 0) for v in values.values()):
+        out = _one_set(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[column]
+        return ufunc_result(out)
+    arrays = {name: as_float_array(v, name) for name, v in values.items()}
+    d = as_float_array(d, "d")
+    shape = check_broadcast(d=d, **arrays)
+    flat = [np.broadcast_to(a, shape).ravel() for a in (d, *arrays.values())]
+    sets, inverse = np.unique(np.stack(flat[1:], axis=1), axis=0, return_inverse=True)
+    inverse = inverse.ravel()
+    out = np.empty(flat[0].size)
+    for k, row in enumerate(sets):
+        rows = inverse == k
+        out[rows] = _one_set(flat[0][rows], *map(float, row), friction, heights)[column]
+    return out.reshape(shape)
 
 
 def contact_fraction(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
@@ -60,6 +86,9 @@ def contact_fraction(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
 
     With adhesion the lower limit is the end of the stable branch (negative penetration
     :math:`\bar u_{end}`), so adhesive contacts outnumber Hertzian ones at the same separation.
+    Like the other integrals of this module it broadcasts over ``d`` and the five parameters
+    as a ufunc does (one tabulation per distinct parameter set): a sweep over
+    :math:`\alpha` and :math:`\gamma` is one call.
 
     Parameters
     ----------
@@ -67,15 +96,15 @@ def contact_fraction(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
         Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
         :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
         without adhesion).
-    alpha : float
+    alpha : array_like
         Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
-    beta : float
+    beta : array_like
         Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
-    gamma : float
+    gamma : array_like
         Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
-    nu : float
+    nu : array_like
         Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
-    h_over_b : float
+    h_over_b : array_like
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
@@ -85,12 +114,14 @@ def contact_fraction(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
     Returns
     -------
     ndarray
-        :math:`n/N` (dimensionless, in [0, 1]), same shape as ``d``.
+        :math:`n/N` (dimensionless, in [0, 1]), the broadcast shape of ``d``
+        and the parameters (a NumPy scalar for scalars).
 
     Raises
     ------
     ValueError
-        If a parameter is not a real, finite scalar in its range, the parameters give a
+        If a parameter is not real and finite or out of its range, the shapes do not
+        broadcast, the parameters give a
         Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
         or a separation lies outside its range.
 
@@ -98,12 +129,15 @@ def contact_fraction(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
     --------
     >>> round(float(contact_fraction(0.0, 0.01, 1000.0)), 12)  # Hertz: the upper half of phi
     0.5
+    >>> n = contact_fraction(0.0, [[0.01], [0.05]], 1000.0, [0.0, 1e-3])  # alpha (2, 1) by gamma (2,)
+    >>> n.shape, bool(n[1, 1] > n[1, 0])  # adhesion draws more asperities into contact
+    ((2, 2), True)
 
     References
     ----------
     Adams et al., Eqs (5), (18) (lower limit), (19); Greenwood & Williamson (1966).
     """
-    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[0]["contacts"]
+    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights, "contacts")
 
 
 def normal_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
@@ -125,15 +159,15 @@ def normal_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=No
         Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
         :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
         without adhesion).
-    alpha : float
+    alpha : array_like
         Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
-    beta : float
+    beta : array_like
         Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
-    gamma : float
+    gamma : array_like
         Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
-    nu : float
+    nu : array_like
         Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
-    h_over_b : float
+    h_over_b : array_like
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
@@ -143,12 +177,14 @@ def normal_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=No
     Returns
     -------
     ndarray
-        :math:`P/(NGb^2)`, positive compressive, negative tensile; same shape as ``d``.
+        :math:`P/(NGb^2)`, positive compressive, negative tensile; the broadcast shape of ``d``
+        and the parameters (a NumPy scalar for scalars).
 
     Raises
     ------
     ValueError
-        If a parameter is not a real, finite scalar in its range, the parameters give a
+        If a parameter is not real and finite or out of its range, the shapes do not
+        broadcast, the parameters give a
         Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
         or a separation lies outside its range.
 
@@ -162,7 +198,7 @@ def normal_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=No
     ----------
     Adams et al., Eqs (6), (17) (with the corrected :math:`\hat P`) and (18).
     """
-    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[0]["P"]
+    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights, "P")
 
 
 def friction_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
@@ -182,15 +218,15 @@ def friction_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=
         Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
         :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
         without adhesion).
-    alpha : float
+    alpha : array_like
         Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
-    beta : float
+    beta : array_like
         Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
-    gamma : float
+    gamma : array_like
         Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
-    nu : float
+    nu : array_like
         Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
-    h_over_b : float
+    h_over_b : array_like
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
@@ -200,12 +236,14 @@ def friction_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=
     Returns
     -------
     ndarray
-        :math:`F/(NGb^2)` (>= 0), same shape as ``d``.
+        :math:`F/(NGb^2)` (>= 0), the broadcast shape of ``d``
+        and the parameters (a NumPy scalar for scalars).
 
     Raises
     ------
     ValueError
-        If a parameter is not a real, finite scalar in its range, the parameters give a
+        If a parameter is not real and finite or out of its range, the shapes do not
+        broadcast, the parameters give a
         Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
         or a separation lies outside its range.
 
@@ -221,7 +259,7 @@ def friction_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=
     ----------
     Adams et al., Eqs (2), (9), (10); Hurtado & Kim (1999).
     """
-    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[0]["F"]
+    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights, "F")
 
 
 def real_contact_area(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None,
@@ -240,15 +278,15 @@ def real_contact_area(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, fricti
         Separation :math:`\bar d = d/\sigma` of the mean summit plane from the flat, in
         :math:`[-10^4, 30 - \bar u_{end}]` (beyond, every integral underflows; :math:`\bar u_{end} = 0`
         without adhesion).
-    alpha : float
+    alpha : array_like
         Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
-    beta : float
+    beta : array_like
         Friction regime parameter :math:`\beta = (R\sigma)^{1/2}/b > 0` (Eq 7).
-    gamma : float
+    gamma : array_like
         Adhesion parameter :math:`\gamma = w/(E^*b) \ge 0` (Eq 16); 0 (default) is Hertz.
-    nu : float
+    nu : array_like
         Poisson's ratio :math:`\nu`, -1 < nu < 0.5 (default 0.3; the paper does not state it).
-    h_over_b : float
+    h_over_b : array_like
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
@@ -258,12 +296,14 @@ def real_contact_area(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, fricti
     Returns
     -------
     ndarray
-        :math:`A/(N\pi b^2)` (>= 0), same shape as ``d``.
+        :math:`A/(N\pi b^2)` (>= 0), the broadcast shape of ``d``
+        and the parameters (a NumPy scalar for scalars).
 
     Raises
     ------
     ValueError
-        If a parameter is not a real, finite scalar in its range, the parameters give a
+        If a parameter is not real and finite or out of its range, the shapes do not
+        broadcast, the parameters give a
         Maugis parameter outside :data:`~asperity.maugis_dugdale.LAMBDA_RANGE` or overflow,
         or a separation lies outside its range.
 
@@ -278,7 +318,7 @@ def real_contact_area(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, fricti
     ----------
     Adams et al., Eqs (8), (21).
     """
-    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[0]["area"]
+    return _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights, "area")
 
 
 def mean_pressure(P, area, nu=0.3):
@@ -290,15 +330,16 @@ def mean_pressure(P, area, nu=0.3):
         :math:`P/(NGb^2)`.
     area : array_like
         :math:`A/(N\pi b^2)`; where it is 0 (no contact) the result is NaN.
-    nu : float
+    nu : array_like
         Poisson's ratio (:math:`E^*/G = 2/(1-\nu)`).
     """
     P, area = _pair(P, "P", area, "area")
     if np.any(area < 0):
         raise ValueError("area (real contact area) must be >= 0")
     nu = check_poisson(nu)
+    check_broadcast(P=P, area=area, nu=nu)
     with np.errstate(all="ignore"):  # a finite load over a vanishing area: infinite pressure
-        return np.where(area > 0, P * (1.0 - nu) / (2.0 * np.pi * np.where(area > 0, area, 1.0)), np.nan)
+        return ufunc_result(np.where(area > 0, P * (1.0 - nu) / (2.0 * np.pi * np.where(area > 0, area, 1.0)), np.nan))
 
 
 def friction_coefficient(F, P):
@@ -310,7 +351,7 @@ def friction_coefficient(F, P):
     """
     F, P = _pair(F, "F", P, "P")
     with np.errstate(all="ignore"):  # a finite friction over a vanishing load: mu = inf
-        return np.where(P > 0, F / np.where(P > 0, P, 1.0), np.nan)
+        return ufunc_result(np.where(P > 0, F / np.where(P > 0, P, 1.0), np.nan))
 
 
 def _pair(x, x_name, y, y_name):

@@ -52,7 +52,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import check_broadcast, check_finite_result, check_nonnegative, check_positive
+from ._validation import check_broadcast, check_finite_result, check_nonnegative, check_positive, ufunc_result
 
 __all__ = ["ng_hardness", "ng_scaled_interference", "ng_interference", "ng_critical_interference"]
 
@@ -96,7 +96,7 @@ def ng_hardness(h, H0, h_star):
     check_broadcast(h=h, H0=H0_, h_star=hs)
     with np.errstate(all="ignore"):
         out = H0_ * np.sqrt(1.0 + hs / h)
-    return check_finite_result(out, "the hardness", h=h, H0=H0_, h_star=hs)
+    return ufunc_result(check_finite_result(out, "the hardness", h=h, H0=H0_, h_star=hs))
 
 
 def ng_scaled_interference(omega, omega_c0, h_star):
@@ -143,7 +143,7 @@ def ng_scaled_interference(omega, omega_c0, h_star):
     check_broadcast(omega=w, omega_c0=w0, h_star=hs)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         out = np.where(w > 0, w / (w0 * (1.0 + hs / np.where(w > 0, w, 1.0))), 0.0)  # w^2/(w0 (w + h*))
-    return check_finite_result(out, "omega*", omega=w, omega_c0=w0, h_star=hs)
+    return ufunc_result(check_finite_result(out, "omega*", omega=w, omega_c0=w0, h_star=hs))
 
 
 def ng_interference(omega_star, omega_c0, h_star):
@@ -188,7 +188,7 @@ def ng_interference(omega_star, omega_c0, h_star):
         out = 0.5 * (x + np.sqrt(x * x + 4.0 * x * hs))
         # where x^2 overflows, the same root factorised (exact for h* = 0 only in the form above)
         out = np.where(np.isfinite(out), out, 0.5 * (x + np.sqrt(x) * np.sqrt(x + 4.0 * hs)))
-    return check_finite_result(out, "the interference", omega_star=ws, omega_c0=w0, h_star=hs)
+    return ufunc_result(check_finite_result(out, "the interference", omega_star=ws, omega_c0=w0, h_star=hs))
 
 
 def ng_critical_interference(omega_c0, h_star):

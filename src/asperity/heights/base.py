@@ -50,7 +50,7 @@ from typing import ClassVar
 
 import numpy as np
 
-from .._validation import as_float_array
+from .._validation import as_float_array, ufunc_result
 from .._validation_files import short_repr
 from ..quadrature import gauss_legendre
 
@@ -236,7 +236,7 @@ class HeightDistribution(abc.ABC):
         if bad.any():
             raise ValueError(f"the GW moment of order {n:g} overflows double precision at d = {short_repr(d[bad])}: "
                              "give separations of physical size (within a few hundred sigma)")
-        return out
+        return ufunc_result(out)
 
 
 #: Beyond this height every standardised density, its derivatives and its survival function

@@ -32,7 +32,7 @@ from typing import ClassVar
 import numpy as np
 from scipy import special
 
-from .._validation import as_float_array, check_finite_result
+from .._validation import as_float_array, check_finite_result, ufunc_result
 from .base import TAIL, HeightDistribution, check_derivative_order, check_order
 
 __all__ = ["Exponential", "exponential_moment"]
@@ -148,7 +148,7 @@ def exponential_moment(d, order: float):
     n = check_order(order)
     with np.errstate(all="ignore"):
         out = _exponential_form(d, n)
-    return check_finite_result(out, f"the exponential moment of order {n:g}", d=d)
+    return ufunc_result(check_finite_result(out, f"the exponential moment of order {n:g}", d=d))
 
 
 def _exponential_form(d, n):

@@ -25,7 +25,7 @@ from typing import ClassVar
 import numpy as np
 from scipy import special
 
-from .._validation import as_float_array, check_finite_result
+from .._validation import as_float_array, check_finite_result, ufunc_result
 from .base import HeightDistribution, check_derivative_order, check_order, gw_moment_quadrature
 
 __all__ = ["Gaussian", "GAUSSIAN", "gaussian_moment"]
@@ -195,4 +195,4 @@ def gaussian_moment(x, order: float):
         rest = ~closed & ~zero
         if np.any(rest):
             out[rest] = gw_moment_quadrature(GAUSSIAN, x[rest], k)
-    return check_finite_result(out, f"the Gaussian moment of order {k:g}", x=x)
+    return ufunc_result(check_finite_result(out, f"the Gaussian moment of order {k:g}", x=x))

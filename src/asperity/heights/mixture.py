@@ -37,7 +37,7 @@ from typing import ClassVar
 import numpy as np
 from scipy import special
 
-from .._validation import as_float_array, check_finite_result, check_scalar_range
+from .._validation import as_float_array, check_finite_result, check_scalar_range, ufunc_result
 from .base import HeightDistribution, check_derivative_order, check_order
 from .gaussian import GAUSSIAN, gaussian_moment
 
@@ -82,7 +82,7 @@ def mixture_moment(d, order, weights, means, sds):
     with np.errstate(all="ignore"):
         out = sum(w * s**order * gaussian_moment((d - m) / s, order)
                   for w, m, s in zip(weights, means, sds, strict=True))
-    return check_finite_result(out, f"the mixture's moment of order {order:g}", d=d)
+    return ufunc_result(check_finite_result(out, f"the mixture's moment of order {order:g}", d=d))
 
 
 def mixture_stats(weights, means, sds) -> tuple[float, float, float, float]:

@@ -41,7 +41,7 @@ from typing import ClassVar
 import numpy as np
 from scipy import special
 
-from .._validation import as_float_array, check_finite_result, check_scalar_range, check_scalar_real
+from .._validation import as_float_array, check_finite_result, check_scalar_range, check_scalar_real, ufunc_result
 from .base import SF_FLOOR, TAIL, HeightDistribution, check_derivative_order, check_order, gw_moment_quadrature
 
 __all__ = ["PearsonIII", "pearson3_moment", "stirling_error", "SKEW_RANGE", "SKEW_MIN"]
@@ -278,7 +278,7 @@ def pearson3_moment(d, order: float, skew: float):
                          f"got {skew!r}")
     with np.errstate(all="ignore"):
         out = _pearson3_form(d, n, s)
-    return check_finite_result(out, f"the Pearson III moment of order {n:g}", d=d, skew=s)
+    return ufunc_result(check_finite_result(out, f"the Pearson III moment of order {n:g}", d=d, skew=s))
 
 
 def _pearson3_form(d, n, s):
