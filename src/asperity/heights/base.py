@@ -53,6 +53,7 @@ import numpy as np
 from .._validation import as_float_array, ufunc_result
 from .._validation_files import short_repr
 from ..quadrature import gauss_legendre
+from .checks import MAX_ORDER, check_derivative_order, check_order, checked_density
 
 __all__ = ["HeightDistribution", "TAIL", "SF_FLOOR", "EDGE_BAND", "MAX_ORDER", "check_heights", "check_order",
            "check_derivative_order", "tanh_sinh",
@@ -128,7 +129,7 @@ class HeightDistribution(abc.ABC):
         for name in ("pdf", "sf", "pdf_derivative"):  # every family's, checked the same way
             method = cls.__dict__.get(name)
             if method is not None and not getattr(method, "_checked", False):
-                setattr(cls, name, _checked_density(method, name))
+                setattr(cls, name, checked_density(method, name))
 
     def __repr__(self) -> str:
         """``Name()``, so signatures and help() show the distribution, not an object address
@@ -239,72 +240,12 @@ class HeightDistribution(abc.ABC):
         return ufunc_result(out)
 
 
-#: Beyond this height every standardised density, its derivatives and its survival function
-#: have their limits (0, or 1 for the survival function below); a family's formula may
-#: overflow there (z^2 = inf) and give NaN, which :func:`_checked_density` replaces by them.
-_FAR = 1e150
-
-
-def _checked_density(method, name):
-    """``method`` (a family's pdf, sf or pdf_derivative) on finite heights, without warnings."""
-
-    @functools.wraps(method)
-    def checked(self, z, *args):
-        # the integrals call this with large float arrays: one sum decides (a NaN or an inf
-        # makes it non-finite, and finite heights of physical size never overflow it)
-        if not (type(z) is np.ndarray and z.dtype == np.float64 and np.isfinite(np.sum(z))):
-            z = as_float_array(z, "z", allow_empty=True)
-        with np.errstate(all="ignore"):
-            out = method(self, z, *args)
-            total = np.sum(out)
-        if np.isfinite(total):
-            return out
-        finite = np.isfinite(out)
-        if not finite.all():
-            z_b = np.broadcast_to(z, np.shape(out))
-            far = ~finite & (np.abs(z_b) >= _FAR)
-            limit = np.where(z_b < 0, 1.0, 0.0) if name == "sf" else 0.0
-            out = np.where(far, limit, out)
-            if not np.isfinite(out).all():
-                raise ArithmeticError(f"{type(self).__name__}.{name} lost precision at z = "
-                                      f"{short_repr(z_b[~np.isfinite(out)])}")  # a defect: report it
-        return out
-
-    checked._checked = True
-    return checked
-
-
 def check_heights(heights) -> HeightDistribution:
     """``heights`` if it is a :class:`HeightDistribution`, else a ValueError saying how to get one."""
     if not isinstance(heights, HeightDistribution):
         raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN, or "
                          f"asperity.heights.parse_heights('weibull:skew=0.5')), got {heights!r}")
     return heights
-
-
-#: Highest order of a GW moment the closed forms and the quadrature serve (:func:`check_order`):
-#: the laws need 0, 1, 3/2 and a few more; beyond 20 the moments leave double precision for
-#: separations of a few hundred sigma.
-MAX_ORDER = 20.0
-
-
-def check_order(order) -> float:
-    """The order n of a GW moment as a float, -1 < n <= :data:`MAX_ORDER` (a 0-d array is a number)."""
-    if isinstance(order, np.ndarray) and order.ndim == 0 and order.dtype.kind in "fiu":
-        order = order[()]
-    if isinstance(order, bool) or not isinstance(order, int | float | np.integer | np.floating):
-        raise ValueError(f"order must be one real number in (-1, {MAX_ORDER:g}], got {short_repr(order)}")
-    k = float(order)
-    if not -1.0 < k <= MAX_ORDER:
-        raise ValueError(f"order must lie in (-1, {MAX_ORDER:g}], got {short_repr(order)}")
-    return k
-
-
-def check_derivative_order(order) -> int:
-    """The order of a density derivative: 1 or 2 (a ValueError naming ``order`` otherwise)."""
-    if isinstance(order, bool) or not isinstance(order, int | np.integer) or order not in (1, 2):
-        raise ValueError(f"order (of the density's derivative) must be 1 or 2, got {short_repr(order)}")
-    return int(order)
 
 
 @functools.lru_cache(maxsize=4)
