@@ -158,6 +158,7 @@ def test_the_integrals_broadcast_over_the_parameters(func):
         expected = func(d[j], float(alpha[i, 0]), 1000.0, gamma[j], nu=nu[j], h_over_b=2.0)
         assert got[i, j] == pytest.approx(float(expected), rel=1e-13, abs=1e-300)
     assert func(0.0, [0.01, 0.02], [100.0, 1000.0]).shape == (2,)
+    assert func(0.0, (0.01, 0.02), range(100, 102)).shape == (2,)  # any array-like
 
 
 def test_parameters_that_do_not_broadcast_or_leave_their_range_are_named():

@@ -262,3 +262,10 @@ def test_every_si_function_takes_quantities():
     for got, expected in pairs:
         np.testing.assert_allclose(got, expected, rtol=1e-14)
     assert adhesion_gamma(0.0, 1e11, 0.25e-9) == 0.0  # no adhesion is gamma = 0, as its inverse says
+    # a ratio of lengths: plain numbers are in any one unit, so a quantity beside them is refused
+    # (a second review: roughness_alpha(4 nm, 1.0) divided metres by nanometres)
+    for call in (lambda: roughness_alpha(4 * u.nm, 1000.0), lambda: regime_beta(4.0, 1 * u.um, 0.25),
+                 lambda: roughness_alpha("4nm", 1000.0)):
+        with pytest.raises(ValueError, match="must be all quantities or all plain numbers"):
+            call()
+    assert roughness_alpha(4.0, 1000.0) == pytest.approx(roughness_alpha(4 * u.nm, 1 * u.um), rel=1e-15)

@@ -40,7 +40,7 @@ from ._validation import (
     check_positive,
     check_text,
 )
-from .units import to_si
+from .units import is_quantity, to_si
 
 __all__ = [
     "roughness_alpha",
@@ -80,10 +80,21 @@ def roughness_alpha(sigma, R):
     ----------
     Adams et al., Eq (7).
     """
-    sigma, R = check_positive(to_si(sigma, "m", "sigma"), "sigma"), check_positive(to_si(R, "m", "R"), "R")
+    sigma, R = _lengths(sigma=sigma, R=R)
     check_broadcast(sigma=sigma, R=R)
     with np.errstate(all="ignore"):
         return check_finite_result(np.sqrt(sigma / R), "alpha", sigma=sigma, R=R)
+
+
+def _lengths(**values):
+    """The lengths of a ratio, each > 0: all quantities (in metres) or all plain numbers (in one
+    unit, whichever); a mix would divide metres by nanometres, so it is refused."""
+    given = [name for name, v in values.items() if is_quantity(v) or isinstance(v, str)]
+    if given and len(given) < len(values):
+        plain = [name for name in values if name not in given]
+        raise ValueError(f"{', '.join(values)} must be all quantities or all plain numbers in one length unit; got "
+                         f"quantities for {', '.join(given)} and plain numbers for {', '.join(plain)}")
+    return [check_positive(to_si(v, "m", name), name) for name, v in values.items()]
 
 
 def regime_beta(sigma, R, b):
@@ -99,7 +110,7 @@ def regime_beta(sigma, R, b):
     ----------
     Adams et al., Eq (7).
     """
-    sigma, R, b = (check_positive(to_si(x, "m", n), n) for x, n in ((sigma, "sigma"), (R, "R"), (b, "b")))
+    sigma, R, b = _lengths(sigma=sigma, R=R, b=b)
     check_broadcast(sigma=sigma, R=R, b=b)
     with np.errstate(all="ignore"):
         return check_finite_result(np.sqrt(sigma * R) / b, "beta", sigma=sigma, R=R, b=b)

@@ -57,11 +57,21 @@ def _one_set(d, alpha, beta, gamma, nu, h_over_b, friction, heights):
     return tab.evaluate(d)
 
 
+def _is_array(value) -> bool:
+    """Whether a parameter is array-like (a list, a pandas Series, a range, ...), not one value."""
+    if isinstance(value, list | tuple | range):
+        return True
+    try:
+        return np.ndim(value) > 0
+    except (ValueError, TypeError):  # ragged: an array (as_float_array names it)
+        return True
+
+
 def _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights, column):
     """One column of the integrals, broadcast over ``d`` and the parameters like a ufunc: one
     tabulation per distinct parameter set; a NumPy scalar for scalar inputs."""
     values = dict(zip(_PARAMETERS, (alpha, beta, gamma, nu, h_over_b), strict=True))
-    if not any(isinstance(v, list | tuple) or (isinstance(v, np.ndarray) and v.ndim > 0) for v in values.values()):
+    if not any(_is_array(v) for v in values.values()):
         out = _one_set(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[column]
         return ufunc_result(out)
     arrays = {name: as_float_array(v, name) for name, v in values.items()}

@@ -178,7 +178,10 @@ class Tabulation:
             separation, :class:`~asperity.height_sums.HeightSums`, serve their own, wider
             range), or ``order`` is not 0, 1 or 2.
         """
-        d = as_float_array(d, "d", allow_empty=True)
+        if not (type(d) is np.ndarray and d.dtype == np.float64):  # the Newton steps pass float arrays
+            d = as_float_array(d, "d", allow_empty=True)
+        if d.size and not (d.min() >= self.d_min and d.max() <= self.d_max):  # NaN fails too
+            d = as_float_array(d, "d")  # names a NaN or an infinity
         if self.height_sums is None and d.size and (d.min() < self.d_min or d.max() > self.d_max):
             raise ValueError(f"d (separation d/sigma) must lie in [{self.d_min:g}, {self.d_max:g}], the separations "
                              f"this tabulation serves (extend it first: tab.extended(d_min, d_max)); got values "

@@ -229,7 +229,10 @@ class HeightDistribution(abc.ABC):
         overflowed (a closed form far in a tail) are redone by :func:`gw_moment_quadrature`,
         whose terms stay finite; a moment that itself leaves double precision is a ValueError."""
         with np.errstate(all="ignore"):
-            out = np.array(raw(d), dtype=float)
+            try:
+                out = np.array(raw(d), dtype=float)
+            except ValueError:  # a closed form that checks its own result (Gaussian, mixtures) overflowed
+                out = np.full(d.shape, np.nan)
             bad = ~np.isfinite(out)
             if bad.any():
                 out[bad] = gw_moment_quadrature(self, d[bad], n)

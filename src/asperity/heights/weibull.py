@@ -187,7 +187,9 @@ class Weibull(HeightDistribution):
         w = self._w(z)
         inside = w > 0
         wp = np.where(inside, w, 1.0)
-        return np.where(inside, self.sd_w * self.c * wp ** (self.c - 1.0) * np.exp(-(wp**self.c)), 0.0)
+        e = np.exp(-(wp**self.c))
+        # where e^(-w^c) underflows the density does too (w^(c-1) would make inf * 0)
+        return np.where(inside & (e > 0), self.sd_w * self.c * wp ** (self.c - 1.0) * e, 0.0)
 
     def pdf_derivative(self, z, order: int):
         """First or second derivative of the density (0 below the support)."""
