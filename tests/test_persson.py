@@ -75,3 +75,22 @@ def test_bad_input(args, message):
             law(*args)
     with pytest.raises(TypeError, match="SurfaceTopography"):
         rms_slope(np.zeros((4, 4)))
+
+
+def test_the_laws_broadcast_over_modulus_and_slope():
+    """A review: E_star and rms_slope were scalar-only; now every input broadcasts like a ufunc."""
+    from asperity.interaction import cgp_shift
+
+    p = np.array([1e6, 1e7, 1e8])
+    E = np.array([[5e10], [1e11]])
+    slope = np.array([0.05, 0.1, 0.2])
+    for law in (persson_area_fraction, bgt_area_fraction):
+        got = law(p, E, slope)
+        assert got.shape == (2, 3)
+        for i, j in np.ndindex(got.shape):
+            assert got[i, j] == law(p[j], E[i, 0], slope[j])
+        assert type(law(1e6, 1e11, 0.1)) is np.float64
+        with pytest.raises(ValueError, match="^p, E_star, rms_slope must have shapes"):
+            law(p, [1e11, 2e11], 0.1)
+    shift = cgp_shift(1e6, np.array([1e-6, 4e-6]), [1e11, 2e11])
+    np.testing.assert_allclose(shift, [cgp_shift(1e6, 1e-6, 1e11), cgp_shift(1e6, 4e-6, 2e11)], rtol=1e-15)

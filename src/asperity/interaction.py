@@ -63,7 +63,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validation import as_float_array, check_finite_result, check_poisson, check_scalar_positive, scalar
+from ._validation import (
+    as_float_array,
+    check_broadcast,
+    check_finite_result,
+    check_poisson,
+    check_positive,
+    check_scalar_positive,
+    scalar,
+)
 from .units import to_si
 
 __all__ = [
@@ -96,15 +104,15 @@ def cgp_shift(p, area, E_star):
     ----------
     p : array_like
         Nominal pressure :math:`\bar p = P/A_0` [Pa], real and finite (negative: tensile).
-    area : float
+    area : array_like
         Nominal contact area :math:`A_0` [m^2], > 0.
-    E_star : float
+    E_star : array_like
         Composite Young's modulus :math:`E^*` [Pa], > 0.
 
     Returns
     -------
     float or ndarray
-        :math:`\Delta` [m], the shape of ``p``.
+        :math:`\Delta` [m]: a float for scalar inputs, else the broadcast shape of the inputs.
 
     References
     ----------
@@ -116,10 +124,11 @@ def cgp_shift(p, area, E_star):
     9.578
     """
     p = as_float_array(to_si(p, "Pa", "p"), "p")
-    area = check_scalar_positive(area, "area", "m^2")
-    E_star = check_scalar_positive(E_star, "E_star", "Pa")
+    area = check_positive(to_si(area, "m^2", "area"), "area")
+    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
+    check_broadcast(p=p, area=area, E_star=E_star)
     with np.errstate(all="ignore"):
-        out = CGP_MEAN_COMPLIANCE * p * math.sqrt(area) / E_star
+        out = CGP_MEAN_COMPLIANCE * p * np.sqrt(area) / E_star
     out = check_finite_result(out, "the shift Delta", p=p, area=area, E_star=E_star)
     return float(out) if out.ndim == 0 else out
 

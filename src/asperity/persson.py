@@ -44,7 +44,13 @@ import math
 import numpy as np
 from scipy import special
 
-from ._validation import as_float_array, check_finite_result, check_scalar_positive
+from ._validation import (
+    as_float_array,
+    check_broadcast,
+    check_finite_result,
+    check_positive,
+    ufunc_result,
+)
 from .units import to_si
 
 __all__ = ["KAPPA_PERSSON", "KAPPA_BGT", "persson_area_fraction", "bgt_area_fraction", "rms_slope"]
@@ -62,6 +68,15 @@ def _pressure(p):
     return p
 
 
+def _inputs(p, E_star, rms_slope):
+    """Pressure (>= 0), modulus and slope (> 0) as arrays that broadcast together."""
+    p = _pressure(p)
+    E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
+    slope = check_positive(to_si(rms_slope, "", "rms_slope"), "rms_slope")
+    check_broadcast(p=p, E_star=E_star, rms_slope=slope)
+    return p, E_star, slope
+
+
 def persson_area_fraction(p, E_star, rms_slope):
     r"""Real contact area fraction of Persson's theory (full contact is reached only as p -> infinity).
 
@@ -73,21 +88,22 @@ def persson_area_fraction(p, E_star, rms_slope):
     ----------
     p : array_like
         Nominal pressure :math:`p = P/A_0` [Pa], >= 0.
-    E_star : float
+    E_star : array_like
         Contact modulus :math:`E^*` [Pa], > 0.
-    rms_slope : float
+    rms_slope : array_like
         Rms gradient of the surface :math:`h' = \langle|\nabla h|^2\rangle^{1/2}` [-], > 0
         (:func:`rms_slope`).
 
     Returns
     -------
     ndarray
-        :math:`A/A_0` in [0, 1), the shape of ``p``.
+        :math:`A/A_0` in [0, 1), the broadcast shape of the inputs.
 
     Raises
     ------
     ValueError
-        For negative or non-finite pressures, or a non-positive modulus or slope.
+        For negative or non-finite pressures, a non-positive modulus or slope, or shapes
+        that do not broadcast.
 
     Examples
     --------
@@ -98,13 +114,11 @@ def persson_area_fraction(p, E_star, rms_slope):
     ----------
     B. N. J. Persson, J. Chem. Phys. 115 (2001) 3840 (erf solution of the stress diffusion).
     """
-    p = _pressure(p)
-    E_star = check_scalar_positive(E_star, "E_star", "Pa")
-    slope = check_scalar_positive(rms_slope, "rms_slope", "")
+    p, E_star, slope = _inputs(p, E_star, rms_slope)
     with np.errstate(all="ignore"):
         x = check_finite_result(math.sqrt(2.0) * p / (E_star * slope), "p/(E_star rms_slope)", p=p, E_star=E_star,
                                 rms_slope=slope)
-    return special.erf(x)
+    return ufunc_result(special.erf(x))
 
 
 def bgt_area_fraction(p, E_star, rms_slope):
@@ -121,20 +135,21 @@ def bgt_area_fraction(p, E_star, rms_slope):
     ----------
     p : array_like
         Nominal pressure [Pa], >= 0.
-    E_star : float
+    E_star : array_like
         Contact modulus [Pa], > 0.
-    rms_slope : float
+    rms_slope : array_like
         Rms gradient :math:`h'` [-], > 0.
 
     Returns
     -------
     ndarray
-        :math:`A/A_0`, the shape of ``p`` (not capped at 1).
+        :math:`A/A_0`, the broadcast shape of the inputs (not capped at 1).
 
     Raises
     ------
     ValueError
-        For negative or non-finite pressures, or a non-positive modulus or slope.
+        For negative or non-finite pressures, a non-positive modulus or slope, or shapes
+        that do not broadcast.
 
     Examples
     --------
@@ -145,12 +160,10 @@ def bgt_area_fraction(p, E_star, rms_slope):
     ----------
     A. W. Bush, R. D. Gibson, T. R. Thomas, Wear 35 (1975) 87-111.
     """
-    p = _pressure(p)
-    E_star = check_scalar_positive(E_star, "E_star", "Pa")
-    slope = check_scalar_positive(rms_slope, "rms_slope", "")
+    p, E_star, slope = _inputs(p, E_star, rms_slope)
     with np.errstate(all="ignore"):
         out = KAPPA_BGT * p / (E_star * slope)
-    return check_finite_result(out, "the BGT area fraction", p=p, E_star=E_star, rms_slope=slope)
+    return ufunc_result(check_finite_result(out, "the BGT area fraction", p=p, E_star=E_star, rms_slope=slope))
 
 
 def rms_slope(topography):
