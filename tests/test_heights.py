@@ -128,6 +128,9 @@ def test_densities_far_out_are_their_limits_and_nan_is_refused(dist):
     assert type(dist.pdf_derivative(1e200, 2)) is np.float64  # the limit's path too
     assert dist.pdf_derivative(np.array([0.5]), order=1) == dist.pdf_derivative(np.array([0.5]), 1)  # keywords
     z = np.array([-1e308, -1e19, 1e19, 1e308])
+    np.testing.assert_array_equal(dist.pdf(np.array([1e308, 1e308])), 0.0)  # their sum overflows, quietly
+    with pytest.raises(ValueError, match="^z must be finite"):
+        dist.sf(np.array([np.inf, -np.inf]))
     np.testing.assert_array_equal(dist.pdf(z), 0.0)
     np.testing.assert_array_equal(dist.sf(z), [1.0, 1.0, 0.0, 0.0])
     for order in (1, 2):

@@ -265,7 +265,11 @@ def test_every_si_function_takes_quantities():
     # a ratio of lengths: plain numbers are in any one unit, so a quantity beside them is refused
     # (a second review: roughness_alpha(4 nm, 1.0) divided metres by nanometres)
     for call in (lambda: roughness_alpha(4 * u.nm, 1000.0), lambda: regime_beta(4.0, 1 * u.um, 0.25),
-                 lambda: roughness_alpha("4nm", 1000.0)):
+                 lambda: roughness_alpha("4nm", 1000.0), lambda: roughness_alpha(["4 nm"], 1000.0),
+                 lambda: regime_beta(4.0, 1000.0, ("2 nm",)),
+                 lambda: roughness_alpha([4 * u.nm, 4.0], [1 * u.um, 1 * u.um])):  # a third review: lists
         with pytest.raises(ValueError, match="must be all quantities or all plain numbers"):
             call()
     assert roughness_alpha(4.0, 1000.0) == pytest.approx(roughness_alpha(4 * u.nm, 1 * u.um), rel=1e-15)
+    np.testing.assert_allclose(roughness_alpha(["4nm", "9nm"], [1 * u.um, "1um"]), np.sqrt([4e-3, 9e-3]),
+                               rtol=1e-15)

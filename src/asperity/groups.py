@@ -86,14 +86,25 @@ def roughness_alpha(sigma, R):
         return check_finite_result(np.sqrt(sigma / R), "alpha", sigma=sigma, R=R)
 
 
+def _kinds(value) -> set:
+    """'quantity' and/or 'number': what ``value`` holds (lists, tuples and object arrays element by element)."""
+    if is_quantity(value) or isinstance(value, str):
+        return {"quantity"}
+    if isinstance(value, list | tuple) or (isinstance(value, np.ndarray) and value.dtype == object):
+        items = value.ravel() if isinstance(value, np.ndarray) else value
+        return set().union(*(_kinds(x) for x in items)) if len(items) else {"number"}
+    return {"number"}
+
+
 def _lengths(**values):
     """The lengths of a ratio, each > 0: all quantities (in metres) or all plain numbers (in one
     unit, whichever); a mix would divide metres by nanometres, so it is refused."""
-    given = [name for name, v in values.items() if is_quantity(v) or isinstance(v, str)]
-    if given and len(given) < len(values):
-        plain = [name for name in values if name not in given]
+    kinds = {name: _kinds(v) for name, v in values.items()}
+    if len(set().union(*kinds.values())) > 1:
+        given = [name for name, k in kinds.items() if "quantity" in k]
+        plain = [name for name, k in kinds.items() if "number" in k]
         raise ValueError(f"{', '.join(values)} must be all quantities or all plain numbers in one length unit; got "
-                         f"quantities for {', '.join(given)} and plain numbers for {', '.join(plain)}")
+                         f"quantities in {', '.join(given)} and plain numbers in {', '.join(plain)}")
     return [check_positive(to_si(v, "m", name), name) for name, v in values.items()]
 
 

@@ -123,7 +123,7 @@ def cgp_shift(p, area, E_star):
     >>> round(cgp_shift(1e6, 1e-6, 1e11) * 1e9, 4)  # 1 MPa over 1 mm^2 on E* = 100 GPa: nm
     9.578
     """
-    p = as_float_array(to_si(p, "Pa", "p"), "p")
+    p = as_float_array(to_si(p, "Pa", "p"), "p", allow_empty=True)
     area = check_positive(to_si(area, "m^2", "area"), "area")
     E_star = check_positive(to_si(E_star, "Pa", "E_star"), "E_star")
     check_broadcast(p=p, area=area, E_star=E_star)

@@ -60,11 +60,12 @@ def checked_density(method, name: str):
     def checked(self, z, *args, **kwargs):
         # the integrals call this with float arrays: one sum decides (a NaN or an inf makes it
         # non-finite, and finite heights of physical size never overflow it)
-        if not (type(z) is np.ndarray and z.dtype == np.float64 and math.isfinite(z.sum())):
-            z = as_float_array(z, "z", allow_empty=True)
-        with np.errstate(all="ignore"):
+        with np.errstate(all="ignore"):  # the sums too: 1e308 + 1e308 overflows quietly
+            if not (type(z) is np.ndarray and z.dtype == np.float64 and math.isfinite(z.sum())):
+                z = as_float_array(z, "z", allow_empty=True)
             out = method(self, z, *args, **kwargs)
-        if math.isfinite(np.sum(out)):
+            total = np.sum(out)
+        if math.isfinite(total):
             return ufunc_result(out)
         z_b = np.broadcast_to(z, np.shape(out))
         bad = ~np.isfinite(out)
