@@ -107,6 +107,8 @@ def test_derived_numbers_physical_match_the_regime_functions_and_the_groups():
     ({"P_min": 10.0, "P_max": 1.0}, "load range: the minimum must be below the maximum"),
     ({"d_min": 3.0, "d_max": 3.0}, "separation range"),
     ({"P_max": 1e15}, "too large"),
+    ({"P_min": 1e-300}, "load range: at most 24 decades"),  # a review: an unreadable axis
+    ({"mode": "physical", "P_min_N": 1e-30}, "load range: at most 24 decades"),
 ])
 def test_errors_are_the_librarys(changes, needle):
     with pytest.raises(ValueError, match=needle):

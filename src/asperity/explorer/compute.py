@@ -94,6 +94,10 @@ def friction_law(state: State):
     return HurtadoKim(tau_f1=state["tau_f1"], tau_f2=state["tau_f2"], a1=state["a1"], a2=state["a2"])
 
 
+#: Widest load range of a view, in decades (the paper's figures span seven).
+MAX_DECADES = 24
+
+
 def _increasing(lo: float, hi: float, what: str):
     if not lo < hi:
         raise ValueError(f"{what}: the minimum must be below the maximum, got {lo:g} and {hi:g}")
@@ -105,6 +109,9 @@ def loads(state: State) -> np.ndarray:
     if not lo > 0:
         raise ValueError(f"load range: loads are log-spaced and must be > 0, got a minimum of {lo:g}")
     _increasing(lo, hi, "load range")
+    if hi / lo > 10.0**MAX_DECADES:  # a log axis over hundreds of decades shows nothing
+        raise ValueError(f"load range: at most {MAX_DECADES} decades on the plots' log axes, got {lo:g} to {hi:g} "
+                         f"({math.log10(hi / lo):.0f} decades): raise the minimum")
     return np.geomspace(lo, hi, state["n"])
 
 
