@@ -22,8 +22,8 @@ solutions (dimensionless core, physical shell): with :math:`K = \tfrac43E^*`,
 :func:`md_normal_force` the force against the penetration (displacement control, the stable
 branch of :func:`~asperity.maugis_dugdale.md_solve`), :func:`md_pull_off_force` the pull-off
 force.  They take either the Dugdale stress ``sigma0`` or the Maugis parameter ``lam``, and
-broadcast over every input like ufuncs.  Each distinct :math:`\lambda` is one solve (about
-0.3-1 ms): loads or penetrations at one :math:`\lambda` cost little more than one, but a
+broadcast over every input like ufuncs.  Each distinct :math:`\lambda` is one solve (0.15-0.5
+ms): loads or penetrations at one :math:`\lambda` cost little more than one, but a
 sweep over radii at a fixed ``sigma0`` changes :math:`\lambda \propto R^{1/3}` at every
 element (2000 radii: 0.3 s for the pull-off force, 1 s for the contact radius).
 
