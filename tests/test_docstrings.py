@@ -16,7 +16,7 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.branch_inversion",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity._maugis_dugdale_brackets", "asperity.maugis_dugdale_branch", "asperity.hertz",
-                   "asperity.jkr", "asperity.dmt",
+                   "asperity.jkr", "asperity.jkr_branch", "asperity.dmt",
                    "asperity.bodies", "asperity.surface", "asperity.physical",
                    "asperity.physical_description", "asperity.units",
                    "asperity.jackson_green", "asperity.jackson_green_fits", "asperity.jackson_green_hardness",

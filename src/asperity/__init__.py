@@ -107,6 +107,7 @@ _SUBMODULES = (
     "jackson_green_fits",
     "jackson_green_hardness",
     "jkr",
+    "jkr_branch",
     "materials",
     "maugis_dugdale",
     "maugis_dugdale_load",
