@@ -25,7 +25,8 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "asperity"
 #: (cycle, surface, regimes, fit, sweeps, validation, explorer) are placed as the style guide
 #: places them.
 LAYERS = [
-    ("base", {"_validation", "_validation_files", "_numbers", "_csv", "_optional", "_version", "_atomic", "_json",
+    ("base", {"_validation", "_validation_files", "_results", "_numbers", "_csv", "_optional", "_version", "_atomic",
+              "_json",
               "_warnings",
               "units", "quadrature", "quantities"}),
     ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "_maugis_dugdale_brackets",
@@ -49,8 +50,8 @@ LAYERS = [
 #: The independent slow path: imports nothing else from asperity, and nothing imports it.
 ORACLE = "reference"
 #: Private base modules meant to be imported by every module.
-SHARED_PRIVATE = {"_validation", "_validation_files", "_numbers", "_csv", "_optional", "_version", "_atomic", "_json",
-                  "_warnings"}
+SHARED_PRIVATE = {"_validation", "_validation_files", "_results", "_numbers", "_csv", "_optional", "_version",
+                  "_atomic", "_json", "_warnings"}
 
 RANK = {name: i for i, (_, names) in enumerate(LAYERS) for name in names}
 
