@@ -183,6 +183,7 @@ def _valid_table(tmp: str) -> dict[str, callable]:
         "asperity.materials.as_material": lambda: {"body": "Au"},
         "asperity.materials.material": lambda: {"name": "Au"},
         "asperity.materials.pair": lambda: {"first": "Au", "second": "Ag", "b": 2.9e-10},
+        "asperity.material_table.table_row": lambda: {"name": "Au"},
         "asperity.maugis_dugdale.md_radius": lambda: {"t": a, "lam": 1.0},
         "asperity.maugis_dugdale.md_load": lambda: {"t": a, "lam": 1.0},
         "asperity.maugis_dugdale.md_penetration": lambda: {"t": a, "lam": 1.0},
@@ -305,8 +306,8 @@ SKIP = {
     "asperity.asperity_law.ContactLaw": "a Protocol (not instantiated)",
     "asperity.friction_stress.FrictionLaw": "a Protocol (not instantiated)",
     "asperity.physical_results.AreaFractionWarning": "a warning category",
-    "asperity.materials.material_names": "no parameters",
-    "asperity.materials.material_table": "no parameters",
+    "asperity.material_table.material_names": "no parameters",
+    "asperity.material_table.material_table": "no parameters",
     "asperity.units.unit_registry": "no parameters",
     "asperity.studies.table1.table1_rows": "no parameters",
     **{f"asperity.studies.{m}.fig{n}_data": "no parameters" for m, ns in

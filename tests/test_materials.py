@@ -201,3 +201,14 @@ def test_material_rejects_bad_types(kwargs, message):
 def test_material_accepts_strings_with_units():
     m = Material("x", E="79 GPa", nu="0.3", b="0.25 nm", w="1 J/m^2", h="0.5 nm")
     assert (m.E, m.nu, m.b, m.w, m.h) == pytest.approx((79e9, 0.3, 2.5e-10, 1.0, 5e-10), rel=1e-14)
+
+
+def test_table_row_is_a_copy_and_names_unknowns_none():
+    from asperity.material_table import material_table, table_row
+    row = table_row("  au ")
+    assert row["name"] == "Au" and row == next(r for r in material_table() if r["name"] == "Au")
+    row["E_Pa"] = -1.0  # the caller's copy: the cached table must not change
+    assert table_row("Au")["E_Pa"] > 0 and material("Au").E > 0
+    assert table_row("unobtainium") is None
+    with pytest.raises(TypeError, match="name must be a string"):
+        table_row(3)

@@ -108,6 +108,7 @@ _SUBMODULES = (
     "jackson_green_hardness",
     "jkr",
     "jkr_branch",
+    "material_table",
     "materials",
     "maugis_dugdale",
     "maugis_dugdale_load",

@@ -43,31 +43,15 @@ References
 
 from __future__ import annotations
 
-import csv
 import functools
 import math
 from dataclasses import dataclass, field
-from importlib import resources
 
 from ._validation import check_optional_positive, check_scalar_poisson, check_scalar_positive, check_text
+from .material_table import TABLE_UNITS, material_names, material_table, table_row
 from .units import format_si
 
-__all__ = ["Material", "as_material", "material", "material_names", "material_table", "pair"]
-
-#: Numeric columns of the table and their SI units.
-TABLE_UNITS = {
-    "E_Pa": "Pa",
-    "nu": "1",
-    "G_Pa": "Pa",
-    "lattice_constant_m": "m",
-    "b_m": "m",
-    "surface_energy_J_m2": "J/m^2",
-    "work_of_adhesion_J_m2": "J/m^2",
-    "hardness_Pa": "Pa",
-    "ise_H0_Pa": "Pa",
-    "ise_h_star_m": "m",
-}
-
+__all__ = ["TABLE_UNITS", "Material", "as_material", "material", "material_names", "material_table", "pair"]
 
 @dataclass(frozen=True)
 class Material:
@@ -328,52 +312,6 @@ def pair(first, second, *, w=None, b=None, h=None, H=None, name: str | None = No
                     components=(one.name, two.name), H=H, H0=H0, h_star=h_star, bodies=(one, two))
 
 
-# -- the table ---------------------------------------------------------------------------
-
-def _cell(row: dict, column: str) -> float | None:
-    text = (row.get(column) or "").strip()
-    return float(text) if text else None
-
-
-@functools.cache
-def _rows() -> tuple[dict, ...]:
-    text = resources.files("asperity").joinpath("data/materials.csv").read_text(encoding="utf-8")
-    lines = [line for line in text.splitlines() if line.strip() and not line.startswith("#")]
-    rows = []
-    for raw in csv.DictReader(lines):
-        row = {k: (v or "").strip() for k, v in raw.items()}
-        row.update({column: _cell(raw, column) for column in TABLE_UNITS})
-        rows.append(row)
-    return tuple(rows)
-
-
-def material_table() -> list[dict]:
-    """Every row of ``data/materials.csv`` as a dict (numbers as float in SI units, missing as None).
-
-    Keys: ``name``, ``kind``, ``components``, the numeric columns of :data:`TABLE_UNITS`,
-    ``slip_system`` and ``sources``.
-    """
-    return [dict(row) for row in _rows()]
-
-
-def material_names() -> list[str]:
-    """Names of the materials in the table (elements, compounds, then pairs such as ``'Au/Au'``)."""
-    return [row["name"] for row in _rows()]
-
-
-def _find(name: str) -> dict | None:
-    key = name.strip().lower()
-    for row in _rows():
-        if row["name"].lower() == key:
-            return row
-    return None
-
-
-def _unknown(name: str) -> ValueError:
-    return ValueError(f"unknown material {name!r}; known: {', '.join(material_names())} "
-                      "(or two of them as 'A/B')")
-
-
 def material(name: str) -> Material:
     """The :class:`Material` of a table row (case-insensitive name), or of two rows ``'A/B'``.
 
@@ -407,11 +345,12 @@ def material(name: str) -> Material:
     ('Au', 'Au')
     """
     check_text(name, "name")
-    row = _find(name)
+    row = table_row(name)
     if row is None:
         parts = name.split("/")
-        if len(parts) != 2 or not all(p.strip() for p in parts) or any(_find(p) is None for p in parts):
-            raise _unknown(name)
+        if len(parts) != 2 or not all(p.strip() for p in parts) or any(table_row(p) is None for p in parts):
+            raise ValueError(f"unknown material {name!r}; known: {', '.join(material_names())} "
+                             "(or two of them as 'A/B')")
         try:
             return pair(*(material(p.strip()) for p in parts))
         except ValueError as err:
