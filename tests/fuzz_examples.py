@@ -132,6 +132,7 @@ def valid_calls(tmp: str) -> dict:
         "asperity.jackson_green_law.JacksonGreenLaw": lambda: {"params": _params_hertz(), "H_over_E": 0.005},
         "asperity.elastic_plastic.make_law": lambda: {"name": "jackson-green", "H_over_E": 0.005},
         "asperity.elastic_plastic.critical_penetration": lambda: {"alpha": 0.05, "nu": 0.3, "H_over_E": 0.005},
+        "asperity.instrument.base_displacement": lambda: {"d": [1.0, 2.0], "P": [10.0, -5.0], "stiffness": 10.0},
         "asperity.elastic_plastic.plastic_fraction": lambda: {"d": [0.5, 1.0], "u_c": 0.1},
         "asperity.plasticity.plasticity_index": lambda: {"E_star": 1e11, "H": 1e9, "sigma_s": 4e-9, "R": 1e-6},
         # asperity interaction
@@ -298,8 +299,7 @@ SKIP = {
                     "asperity.cycle_band.ApproachLaw", "asperity.cycle_band.LoopBand",
                     "asperity.cycle_band.law_columns", "asperity.cycle_band.check_u_in",
                     "asperity.cycle_run.compute_cycle", "asperity.cycle_run.compute_preload_curve",
-                    "asperity.cycle_search.closest_approach", "asperity.cycle_search.retract_pull_off",
-                    "asperity.instrument.base_displacement")},
+                    "asperity.cycle_search.closest_approach", "asperity.cycle_search.retract_pull_off")},
     **{name: "a step of PhysicalContact's plasticity, called with the material and counts it validated "
              "(PhysicalContact with plasticity=, hardness=, size_effect=, h_star= is fuzzed)"
        for name in ("asperity.plasticity.plastic_share", "asperity.plasticity.resolve_plasticity",

@@ -228,6 +228,27 @@ def test_critical_penetration_and_plasticity_index():
         reference.jg_critical_penetration(alpha, nu, H, 3.0), rel=1e-12)
 
 
+def test_critical_penetration_and_plastic_fraction_broadcast_like_ufuncs():
+    alpha = np.array([[0.005], [0.02], [0.08]])
+    nu, H, h = np.array([0.0, 0.25, 0.45]), 0.004, np.array([[0.0], [3.0], [0.5]])
+    u_c = critical_penetration(alpha, nu, H, h)
+    assert u_c.shape == (3, 3)
+    for i in range(3):
+        for j in range(3):
+            want = reference.jg_critical_penetration(float(alpha[i, 0]), float(nu[j]), H, float(h[i, 0]))
+            assert u_c[i, j] == pytest.approx(want, rel=1e-12)
+            assert u_c[i, j] == critical_penetration(float(alpha[i, 0]), float(nu[j]), H, float(h[i, 0]))
+    assert isinstance(critical_penetration(0.01, 0.3, 0.002), np.float64)
+    d = np.linspace(-2.0, 3.0, 4)[:, None]
+    share = plastic_fraction(d, np.array([0.1, 1.0, 2.5]))
+    assert share.shape == (4, 3)
+    assert share == pytest.approx(0.5 * special.erfc((d + np.array([0.1, 1.0, 2.5])) / math.sqrt(2.0)), rel=1e-13)
+    with pytest.raises(ValueError, match=r"d, u_c must have shapes that broadcast together"):
+        plastic_fraction([0.0, 1.0], [1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match=r"alpha, nu, H_over_E, h_star_over_sigma must have shapes that broadcast"):
+        critical_penetration([0.01, 0.02], [0.1, 0.2, 0.3], 0.002)
+
+
 def test_nanometre_summits_whose_contacts_never_reach_a_friction_breakpoint():
     """Found by a review: with a small beta (R = 10 nm on gold) the Hurtado-Kim radius a2 b
     (23 um) lies beyond any contact of these asperities, and the law failed at every load

@@ -96,3 +96,21 @@ def test_approach_ending_inside_a_jump_is_refused():
     d = np.linspace(5.0, 1.2, 100)  # ends between the fold and the landing
     with pytest.raises(ValueError, match="never a stable state"):
         spring_path(d, P(d), dP(d), dP(d), 2.0, force, branch="approach")
+
+
+def test_base_displacement_broadcasts_over_the_stiffness():
+    d, P = np.array([1.0, 2.0, -3.0]), np.array([10.0, -5.0, 0.5])
+    k = np.array([[0.5], [10.0], [math.inf]])
+    Z = base_displacement(d, P, k)
+    assert Z.shape == (3, 3)
+    for i in range(3):
+        assert Z[i].tolist() == base_displacement(d, P, float(k[i, 0])).tolist()
+    assert Z[2].tolist() == d.tolist()  # an infinitely stiff spring: displacement control
+    assert Z[0].tolist() == (d - P / 0.5).tolist()
+    assert isinstance(base_displacement(1.0, 2.0, 4.0), np.float64)
+    with pytest.raises(ValueError, match=r"stiffness .* must be >= 1e-100 .* got -1.0"):
+        base_displacement(d, P, [1.0, -1.0, 2.0])
+    with pytest.raises(ValueError, match=r"d, P, stiffness must have shapes that broadcast together"):
+        base_displacement(d, P, [1.0, 2.0])
+    with pytest.raises(ValueError, match=r"the base displacement overflows double precision"):
+        base_displacement(1.0, 1e300, 1e-100)

@@ -62,9 +62,10 @@ import numpy as np
 
 from ._validation import (
     as_float_array,
+    check_broadcast,
     check_finite_result,
-    check_scalar_sign,
-    scalar,
+    check_nonnegative,
+    check_positive,
     ufunc_result,
 )
 from .asperity_law import AsperityLaw, ModelParameters
@@ -84,7 +85,7 @@ __all__ = [
 ]
 
 
-def critical_penetration(alpha, nu, H_over_E, h_star_over_sigma=0.0) -> float:
+def critical_penetration(alpha, nu, H_over_E, h_star_over_sigma=0.0):
     r"""Penetration at which an asperity starts to yield, :math:`\bar u_c = \omega_c/\sigma`.
 
     .. math::
@@ -94,52 +95,58 @@ def critical_penetration(alpha, nu, H_over_E, h_star_over_sigma=0.0) -> float:
 
     Jackson & Green's critical interference in units of :math:`\sigma`, with the
     self-consistent Nix-Gao size effect (:func:`~asperity.nix_gao.ng_critical_interference`).
+    Broadcasts like a ufunc over its four inputs.
 
     Parameters
     ----------
-    alpha : float
+    alpha : array_like
         Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
-    nu : float
+    nu : array_like
         Poisson's ratio, :math:`0 \le \nu < 0.5` (the range of JG's :math:`C(\nu)`).
-    H_over_E : float
+    H_over_E : array_like
         Hardness over composite modulus :math:`H/E^* > 0` (:math:`H_0/E^*` with the size effect).
-    h_star_over_sigma : float
+    h_star_over_sigma : array_like
         Nix-Gao length over :math:`\sigma`, :math:`h^*/\sigma \ge 0` (0: no size effect).
 
     Returns
     -------
-    float
-        :math:`\bar u_c > 0`.
+    ndarray or numpy.float64
+        :math:`\bar u_c > 0`, the broadcast shape of the inputs (a NumPy scalar for scalars).
 
     Raises
     ------
     ValueError
-        If an input is not a real finite scalar in its range.
+        If an input is not real and finite or out of its range, the shapes do not broadcast,
+        or :math:`\bar u_c` leaves double precision.
 
     Examples
     --------
     >>> psi = 0.01 / 0.002  # plasticity index alpha / (H/E*)
     >>> u_c = critical_penetration(0.01, 0.3, 0.002)
     >>> C = 1.295 * 2.718281828459045 ** (0.736 * 0.3)
-    >>> round(u_c * psi**2 / (3.141592653589793 * C / (2 * 2.84)) ** 2, 12)
+    >>> round(float(u_c) * psi**2 / (3.141592653589793 * C / (2 * 2.84)) ** 2, 12)
     1.0
 
     References
     ----------
     Jackson & Green (2005), critical interference; Greenwood & Williamson (1966); Nix & Gao (1998).
     """
-    alpha = check_scalar_sign(alpha, "alpha", positive=True)
-    H = check_scalar_sign(H_over_E, "H_over_E", positive=True)
-    h = check_scalar_sign(h_star_over_sigma, "h_star_over_sigma", positive=False)
-    C = float(jg_yield_coefficient(float(scalar(as_float_array(nu, "nu"), "nu"))))
+    alpha = check_positive(alpha, "alpha")
+    H = check_positive(H_over_E, "H_over_E")
+    h = check_nonnegative(h_star_over_sigma, "h_star_over_sigma")
+    C = jg_yield_coefficient(nu)
+    check_broadcast(alpha=alpha, nu=C, H_over_E=H, h_star_over_sigma=h)
     with np.errstate(all="ignore"):
-        u_c0 = (0.5 * np.pi * C * np.float64(H) / 2.84) ** 2 / np.float64(alpha) ** 2
-        if not 0.0 < u_c0 < math.inf:  # under- or overflow
-            raise ValueError(f"the critical penetration leaves double precision for alpha = {alpha!r}, "
-                             f"H_over_E = {H!r}: give values of physical size")
+        u_c0 = (0.5 * np.pi * C * H / 2.84) ** 2 / alpha**2
+        bad = ~((u_c0 > 0.0) & (u_c0 < math.inf))  # under- or overflow
+        if bad.any():
+            i = np.flatnonzero(bad.ravel())[0]
+            a, e = (float(np.broadcast_to(x, bad.shape).ravel()[i]) for x in (alpha, H))
+            raise ValueError(f"the critical penetration leaves double precision for alpha = {a!r}, "
+                             f"H_over_E = {e!r}: give values of physical size")
         u_c = ng_interference(1.0, u_c0, h)
-    return float(check_finite_result(u_c, "the critical penetration", alpha=alpha, H_over_E=H,
-                                     h_star_over_sigma=h))
+    return ufunc_result(check_finite_result(u_c, "the critical penetration", alpha=alpha, H_over_E=H,
+                                            h_star_over_sigma=h))
 
 
 def plastic_fraction(d, u_c, heights: HeightDistribution = GAUSSIAN):
@@ -152,20 +159,22 @@ def plastic_fraction(d, u_c, heights: HeightDistribution = GAUSSIAN):
     ----------
     d : array_like
         Separations :math:`d/\sigma`, finite.
-    u_c : float
-        Critical penetration :math:`\bar u_c = \omega_c/\sigma > 0` (:func:`critical_penetration`).
+    u_c : array_like
+        Critical penetration :math:`\bar u_c = \omega_c/\sigma > 0` (:func:`critical_penetration`),
+        broadcast with ``d``.
     heights : HeightDistribution
         Asperity heights (default Gaussian, Eq 19).
 
     Returns
     -------
-    ndarray
-        :math:`n_p/N` in [0, 1], the shape of ``d``.
+    ndarray or numpy.float64
+        :math:`n_p/N` in [0, 1], the broadcast shape of ``d`` and ``u_c``.
 
     Raises
     ------
     ValueError
-        If ``d`` or ``u_c`` is not real and finite or ``u_c <= 0``.
+        If ``d`` or ``u_c`` is not real and finite, ``u_c <= 0``, or their shapes do not
+        broadcast.
 
     Examples
     --------
@@ -177,10 +186,13 @@ def plastic_fraction(d, u_c, heights: HeightDistribution = GAUSSIAN):
     Greenwood & Williamson (1966); Adams et al., Eq (5).
     """
     d = as_float_array(d, "d", allow_empty=True)
-    u_c = check_scalar_sign(u_c, "u_c", positive=True)
+    u_c = check_positive(u_c, "u_c")
+    check_broadcast(d=d, u_c=u_c)
     if not isinstance(heights, HeightDistribution):
         raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
-    return ufunc_result(np.asarray(heights.sf(d + u_c), dtype=float))
+    with np.errstate(over="ignore"):
+        z = d + u_c  # d + u_c past 1e308 is above every height: sf = 0
+    return ufunc_result(np.asarray(heights.sf(np.where(np.isfinite(z), z, np.finfo(float).max)), dtype=float))
 
 
 @dataclass(frozen=True)

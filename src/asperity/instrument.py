@@ -43,7 +43,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._validation import as_float_array, scalar
+from ._validation import as_float_array, check_broadcast, check_finite_result, scalar, ufunc_result
 from .cycle_search import bracketed_roots
 from .quadrature import gauss_legendre
 
@@ -103,6 +103,24 @@ def check_stiffness(stiffness) -> float:
     return k
 
 
+def _stiffness_array(stiffness) -> np.ndarray:
+    """``stiffness`` as a float array in [:data:`STIFFNESS_MIN`, inf] (inf allowed element by element)."""
+    try:
+        raw = None if isinstance(stiffness, str) else np.asarray(stiffness)
+    except (TypeError, ValueError):  # ragged lists and the like: as_float_array names them
+        raw = None
+    if raw is None or raw.dtype.kind not in "fiu" or raw.ndim == 0:
+        return np.asarray(check_stiffness(float(raw) if isinstance(stiffness, np.ndarray) and raw.ndim == 0
+                                          and raw.dtype.kind in "fiu" else stiffness))
+    infinite = np.isposinf(raw)
+    k = as_float_array(np.where(infinite, STIFFNESS_MIN, raw), "stiffness")
+    if not (k >= STIFFNESS_MIN).all():
+        bad = float(k[~(k >= STIFFNESS_MIN)][0])
+        raise ValueError(f"stiffness (instrument spring, k sigma/(N G b^2)) must be >= {STIFFNESS_MIN:g} (inf: "
+                         f"displacement control; valid range {STIFFNESS_MIN:g} <= stiffness <= inf), got {bad!r}")
+    return np.where(infinite, np.inf, k)
+
+
 def base_displacement(d, P, stiffness):
     r"""Base displacement :math:`\bar Z = \bar d - \bar P/\bar k` of a spring of stiffness :math:`\bar k`.
 
@@ -114,19 +132,20 @@ def base_displacement(d, P, stiffness):
         Separations :math:`d/\sigma`.
     P : array_like
         Forces :math:`P/(NGb^2)`, compressive > 0, broadcast with ``d``.
-    stiffness : float
-        :math:`\bar k = k\sigma/(NGb^2) > 0`; ``inf`` gives :math:`\bar Z = \bar d`.
+    stiffness : array_like
+        :math:`\bar k = k\sigma/(NGb^2) \ge` :data:`STIFFNESS_MIN`; ``inf`` gives
+        :math:`\bar Z = \bar d`.  Broadcast with ``d`` and ``P``.
 
     Returns
     -------
-    ndarray
-        :math:`\bar Z` in :math:`\sigma`.
+    ndarray or numpy.float64
+        :math:`\bar Z` in :math:`\sigma`, the broadcast shape (a NumPy scalar for scalars).
 
     Raises
     ------
     ValueError
-        If ``stiffness`` is not a positive real scalar (inf allowed), or ``d``, ``P`` are not
-        real and finite.
+        If ``stiffness`` is not real or below :data:`STIFFNESS_MIN` (inf allowed), ``d``,
+        ``P`` are not real and finite, or the shapes do not broadcast.
 
     Examples
     --------
@@ -137,12 +156,13 @@ def base_displacement(d, P, stiffness):
     ----------
     Israelachvili (2011), ch. 13; Butt, Cappella & Kappl (2005).
     """
-    k = check_stiffness(stiffness)
+    k = _stiffness_array(stiffness)
     d = as_float_array(d, "d", allow_empty=True)
     P = as_float_array(P, "P", allow_empty=True)
-    if math.isinf(k):
-        return d + 0.0 * P
-    return d - P / k
+    check_broadcast(d=d, P=P, stiffness=k)
+    with np.errstate(over="ignore"):
+        Z = d - np.where(np.isinf(k), 0.0, P) / k
+    return ufunc_result(check_finite_result(Z, "the base displacement", d=d, P=P, stiffness=k))
 
 
 def _folds_inside(gl, gr):
