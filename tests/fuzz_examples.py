@@ -304,6 +304,9 @@ SKIP = {
              "(PhysicalContact with plasticity=, hardness=, size_effect=, h_star= is fuzzed)"
        for name in ("asperity.plasticity.plastic_share", "asperity.plasticity.resolve_plasticity",
                     "asperity.plasticity.check_yield")},
+    "asperity.maugis_dugdale_branch.for_each_lambda": "applies a solver it is given (a callable) per distinct lambda; "
+                                                      "md_solve, md_solve_load, md_pull_off and md_branch_end, "
+                                                      "which call it, are fuzzed",
     "asperity.fit.base.parameter_spec": "builds a fit model's parameter table from the registry (get_model)",
     "asperity.fit.runner.grid_for": "the fitting engine's evaluation grid, from a Dataset it validated",
     "asperity.sweeps.spec.make_spec": "called by sweep() (fuzzed) with the arguments it checked",

@@ -192,7 +192,7 @@ def _valid_table(tmp: str) -> dict[str, callable]:
         "asperity.maugis_dugdale.md_lambda": lambda: {"R": 1e-6, "w": 1.0, "E_star": 1e11, "sigma0": 1e9},
         "asperity.maugis_dugdale_branch.check_lambda": lambda: {"lam": 1.0},
         "asperity.maugis_dugdale_branch.md_branch_end": lambda: {"lam": 1.0},
-        "asperity.maugis_dugdale_branch.md_solve": lambda: {"delta": [0.0, 1.0], "lam": 1.0},
+        "asperity.maugis_dugdale_solve.md_solve": lambda: {"delta": [0.0, 1.0], "lam": 1.0},
         "asperity.maugis_dugdale_branch.md_pull_off": lambda: {"lam": 1.0, "control": "load"},
         "asperity.multi_asperity.contact_fraction": lambda: {"d": [0.5, 1.0], **MODEL},
         "asperity.multi_asperity.normal_force": lambda: {"d": [0.5, 1.0], **MODEL},

@@ -32,7 +32,7 @@ LAYERS = [
     ("single-asperity laws", {"friction_stress", "hertz", "jkr", "dmt", "maugis_dugdale", "_maugis_dugdale_brackets",
                               "maugis_dugdale_branch",
                               "jackson_green", "jackson_green_fits", "jackson_green_hardness", "nix_gao",
-                              "maugis_dugdale_load", "maugis_units", "jkr_branch", "cos",
+                              "maugis_dugdale_load", "maugis_dugdale_solve", "maugis_units", "jkr_branch", "cos",
                               "amontons"}),
     ("statistics, groups", {"groups", "heights"}),
     ("integrals", {"asperity_law", "tabulation", "height_sums", "multi_asperity", "elastic_plastic",

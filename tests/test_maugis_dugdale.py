@@ -151,8 +151,8 @@ def test_lambda_range_and_far_jkr():
     for lam in (2e12, 1e-13):
         with pytest.raises(ValueError, match="lam"):
             md.md_branch_end(lam)
-    with pytest.raises(ValueError, match="scalar"):
-        md.md_solve([0.1], [1.0, 2.0])
+    with pytest.raises(ValueError, match=r"delta, lam must have shapes that broadcast together"):
+        md.md_solve([0.1, 0.2, 0.3], [1.0, 2.0])
     with pytest.raises(ValueError, match="t = sqrt"):
         md.md_curve([1e300], 1.0)
 
@@ -248,3 +248,39 @@ def test_t_of_radius_on_floats_equals_the_array_path():
         many = md.md_t_of_radius(np.full(6, A), lam)[0]
         assert one == pytest.approx(many, rel=1e-13)
         assert float(md.md_radius(one, lam)) == pytest.approx(A, rel=1e-12)
+
+
+def test_the_dimensionless_solutions_broadcast_over_lambda_like_ufuncs():
+    """md_solve, md_solve_load, md_branch_end and md_pull_off over an array of lambda equal
+    their scalar calls element by element (one solve per distinct lambda, repeats included)."""
+    from asperity.maugis_dugdale_load import md_solve_load
+    lam = np.array([[1e-6], [0.3], [md.LAMBDA_C], [1.0], [1e3], [0.3]])  # a repeat: grouped
+    delta = np.array([0.5, 2.0, 40.0])
+    A, P, t = md.md_solve(delta, lam)
+    assert A.shape == P.shape == t.shape == (6, 3)
+    for i, x in enumerate(lam[:, 0]):
+        for j, dj in enumerate(delta):
+            assert (A[i, j], P[i, j], t[i, j]) == tuple(md.md_solve(dj, float(x)))
+    loads = np.array([0.0, 3.0, 100.0])
+    A2, D2, t2 = md_solve_load(loads, lam)
+    for i, x in enumerate(lam[:, 0]):
+        assert A2[i].tolist() == md_solve_load(loads, float(x))[0].tolist()
+        assert D2[i].tolist() == md_solve_load(loads, float(x))[1].tolist()
+    for control in ("load", "displacement"):
+        po = md.md_pull_off(lam[:, 0], control)
+        assert po.P.shape == (6,)
+        for i, x in enumerate(lam[:, 0]):
+            one = md.md_pull_off(float(x), control)
+            assert (po.t[i], po.A[i], po.P[i], po.delta[i]) == (one.t, one.A, one.P, one.delta)
+    # The adhesion map: pull-off from DMT (-2) to JKR (-3/2) under load control, monotonic in lambda.
+    curve = md.md_pull_off(np.geomspace(1e-4, 1e4, 41)).P
+    assert curve[0] == pytest.approx(-2.0, abs=1e-3) and curve[-1] == pytest.approx(-1.5, abs=1e-3)
+    assert np.all(np.diff(curve) >= 0)
+    end = md.md_branch_end([0.3, 1e6])
+    assert np.isinf(end.t[0]) and end.P[1] == pytest.approx(-5 / 6, rel=1e-6)
+    assert end.to_dict()["t"][0] is None and end.to_dict()["P"][1] == float(end.P[1])
+    assert isinstance(md.md_branch_end(1.0).P, float)
+    with pytest.raises(ValueError, match=r"delta \(penetration\) must lie in .* for lam=0.3"):
+        md.md_solve([-5.0], [1e3, 0.3])
+    with pytest.raises(ValueError, match=r"lam \(Maugis parameter\) must lie in"):
+        md.md_pull_off([1.0, 1e13])

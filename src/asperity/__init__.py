@@ -112,6 +112,7 @@ _SUBMODULES = (
     "materials",
     "maugis_dugdale",
     "maugis_dugdale_load",
+    "maugis_dugdale_solve",
     "maugis_units",
     "multi_asperity",
     "instrument",

@@ -56,15 +56,16 @@ from .maugis_dugdale_branch import (
     LAMBDA_RANGE,
     BranchPoint,
     check_lambda,
+    for_each_lambda,
     md_branch_end,
     md_pull_off,
-    md_solve,
 )
+from .maugis_dugdale_solve import md_solve
 from .units import to_si
 
 __all__ = ["LAMBDA_C", "BranchPoint", "md_radius", "md_load", "md_penetration", "md_curve", "md_t_of_radius",
            "md_branch_end", "md_solve", "md_pull_off", "md_lambda", "LAMBDA_RANGE", "T_RANGE", "A_MAX",
-           "DELTA_MAX", "check_lambda"]
+           "DELTA_MAX", "check_lambda", "for_each_lambda"]
 
 _FLOATS = (float, np.float64)
 _T_LO, _T_HI = T_RANGE

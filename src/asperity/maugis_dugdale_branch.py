@@ -15,8 +15,9 @@ which ends the stable branch; below it the branch runs to :math:`A \to 0`, where
 of :math:`c`.  The pull-off load is the load at the end of the stable branch under
 displacement control, and the minimum of :math:`P` over the whole curve under load
 control (JKR: :math:`-5/6` and :math:`-3/2`; DMT: :math:`-2` under both).
-:func:`md_solve` finds the point of the stable branch at a given penetration: the
-per-asperity law of the multi-asperity integrals.
+:func:`~asperity.maugis_dugdale_solve.md_solve` finds the point of the stable branch at a
+given penetration: the per-asperity law of the multi-asperity integrals.  The functions
+broadcast over :math:`\lambda` (:func:`for_each_lambda`: one solution per distinct value).
 
 :mod:`asperity.maugis_dugdale` holds the curve (Eqs 11-14) and re-exports every public
 name of this module.  The ranges handled (:data:`LAMBDA_RANGE`, :data:`A_MAX`) live here
@@ -34,16 +35,16 @@ References
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import astuple, dataclass
 
 import numpy as np
 from scipy import optimize
 
-from ._validation import as_float_array, check_positive, scalar, ufunc_result
+from ._validation import check_positive
 from ._validation_files import short_repr
 
-__all__ = ["LAMBDA_C", "LAMBDA_RANGE", "A_MAX", "DELTA_MAX", "BranchPoint", "check_lambda", "md_branch_end",
-           "md_solve", "md_pull_off"]
+__all__ = ["LAMBDA_C", "LAMBDA_RANGE", "A_MAX", "DELTA_MAX", "BranchPoint", "check_lambda", "for_each_lambda",
+           "md_branch_end", "md_pull_off"]
 
 #: Range of the Maugis parameter handled (DMT and JKR are within 1e-6 of their limits far inside).
 LAMBDA_RANGE = (1e-12, 1e12)
@@ -64,6 +65,63 @@ def check_lambda(lam):
         raise ValueError(f"lam (Maugis parameter) must lie in [{lo:g}, {hi:g}] (use asperity.dmt below and "
                          f"asperity.jkr above), got {short_repr(lam)}")
     return lam
+
+
+def for_each_lambda(solve, lam, *arrays, outputs: int = 1):
+    r"""``solve(lam, *arrays)`` with a scalar lambda, once for each distinct value of ``lam``.
+
+    The Maugis-Dugdale curve is solved for one :math:`\lambda` at a time (its tables and
+    brackets depend on it); this applies such a solver to arrays, like a ufunc.
+
+    Parameters
+    ----------
+    solve : callable
+        ``solve(lam_value, *arrays_subset)`` with a Python float and the elements of
+        ``arrays`` where ``lam`` equals it (1-d, or the full broadcast arrays when ``lam``
+        holds one value); returns one array, or a tuple of ``outputs`` arrays, of their shape.
+    lam : ndarray
+        Maugis parameters (already checked: :func:`check_lambda`).
+    arrays : ndarray
+        The other inputs (positional, ``*arrays``), broadcast with ``lam`` (first).
+    outputs : int
+        Number of arrays ``solve`` returns (1: a single array, not a tuple).
+
+    Returns
+    -------
+    ndarray or tuple of ndarray
+        The results in the broadcast shape of ``lam`` and ``arrays``.
+
+    Raises
+    ------
+    ValueError
+        Whatever ``solve`` raises for a value of ``lam`` (the first failing value, in
+        increasing order), or if the shapes do not broadcast.
+
+    Examples
+    --------
+    >>> for_each_lambda(lambda lam, x: lam * x, np.array([1.0, 2.0, 1.0]), np.array(3.0)).tolist()
+    [3.0, 6.0, 3.0]
+
+    References
+    ----------
+    Maugis (1992): the curve depends on :math:`\lambda` alone in these units.
+    """
+    lam, *arrays = np.broadcast_arrays(lam, *arrays)
+    values = np.unique(lam)
+
+    def parts(result):
+        return result if outputs > 1 else (result,)
+
+    if values.size <= 1:  # one lambda (or none: empty arrays) is solved in one call
+        result = parts(solve(float(values[0]) if values.size else 1.0, *arrays))
+        out = tuple(np.broadcast_to(np.asarray(r, dtype=float), lam.shape).copy() for r in result)
+    else:
+        out = tuple(np.empty(lam.shape) for _ in range(outputs))
+        for value in values:
+            mask = lam == value
+            for o, r in zip(out, parts(solve(float(value), *(a[mask] for a in arrays))), strict=True):
+                o[mask] = r
+    return out if outputs > 1 else out[0]
 
 
 #: Largest contact radius A the curve handles.  For large A the curve is Hertz-like,
@@ -105,17 +163,17 @@ LAMBDA_C = float(optimize.brentq(_small_a_curvature, 0.5, 1.5, xtol=1e-15, rtol=
 
 @dataclass(frozen=True)
 class BranchPoint:
-    """A point of the Maugis-Dugdale curve, in Maugis' units.
+    """A point of the Maugis-Dugdale curve, in Maugis' units (arrays of points for an array of lambda).
 
     Attributes
     ----------
-    t : float
+    t : float or ndarray
         Curve parameter :math:`\\sqrt{m^2-1}`, ``inf`` for the limit :math:`A \\to 0`.
-    A : float
+    A : float or ndarray
         Contact radius :math:`a(K/\\pi wR^2)^{1/3}`.
-    P : float
+    P : float or ndarray
         Load :math:`P/(\\pi wR)` (negative: tensile).
-    delta : float
+    delta : float or ndarray
         Penetration :math:`\\Delta = u(K^2/\\pi^2w^2R)^{1/3}`.
     """
 
@@ -125,9 +183,24 @@ class BranchPoint:
     delta: float
 
     def to_dict(self) -> dict:
-        """The point as a dict (``t`` = inf becomes None, as strict JSON wants)."""
-        return {k: (None if not np.isfinite(v) else float(v)) for k, v in
-                (("t", self.t), ("A", self.A), ("P", self.P), ("delta", self.delta))}
+        """The point as a dict (``t`` = inf becomes None, as strict JSON wants; arrays become
+        nested lists)."""
+        def plain(v):
+            if np.ndim(v):
+                return [plain(x) for x in v]
+            return None if not np.isfinite(v) else float(v)
+
+        return {k: plain(v) for k, v in (("t", self.t), ("A", self.A), ("P", self.P), ("delta", self.delta))}
+
+
+def _branch_points(point, lam) -> BranchPoint:
+    """``point(lam)`` (a BranchPoint of one float lambda) for each element of ``lam``: a BranchPoint
+    of floats for a scalar, of arrays of ``lam``'s shape otherwise."""
+    lam = check_lambda(lam)
+    if lam.ndim == 0:
+        return point(float(lam))
+    fields = for_each_lambda(lambda x: astuple(point(x)), lam, outputs=4)
+    return BranchPoint(*fields)
 
 
 def _limit_point(lam: float) -> BranchPoint:
@@ -188,19 +261,20 @@ def md_branch_end(lam) -> BranchPoint:
 
     Parameters
     ----------
-    lam : float
-        Maugis parameter :math:`\lambda`, scalar in ``[1e-12, 1e12]`` (:data:`LAMBDA_RANGE`).
+    lam : array_like
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]`` (:data:`LAMBDA_RANGE`).
 
     Returns
     -------
     BranchPoint
         ``t`` (``inf`` below :math:`\lambda_c`), radius ``A``, load ``P`` = :math:`P/(\pi wR)`
-        and penetration ``delta`` there, in Maugis' units.
+        and penetration ``delta`` there, in Maugis' units: floats for a scalar ``lam``,
+        arrays of its shape otherwise.
 
     Raises
     ------
     ValueError
-        If ``lam`` is not a real scalar in :data:`LAMBDA_RANGE`.
+        If ``lam`` is not real or lies outside :data:`LAMBDA_RANGE`.
 
     Examples
     --------
@@ -212,154 +286,7 @@ def md_branch_end(lam) -> BranchPoint:
     ----------
     Maugis (1992); Johnson & Greenwood (1997); Adams et al., Eqs (11)-(13), (18).
     """
-    lam = float(scalar(check_lambda(lam), "lam"))
-    return _branch_end(lam)
-
-
-def md_solve(delta, lam):
-    r"""Stable-branch contact radius and load of one asperity at penetration :math:`\Delta`.
-
-    Inverts Eq (13), :math:`\Delta(t) = A^2 - \tfrac43\lambda At`, for :math:`t` on the
-    stable branch (where :math:`\Delta(t)` is strictly decreasing, i.e.
-    :math:`d\Delta/dA > 0`) by safeguarded Newton iteration in :math:`\log t`, then
-    evaluates Eqs (11)-(12).  At the end of a branch that runs to :math:`A \to 0`
-    (:math:`\lambda < \lambda_c`) it returns the limit values, with :math:`t = \infty`.
-    Vectorized over ``delta``.
-
-    Parameters
-    ----------
-    delta : array_like
-        Penetration :math:`\Delta = u(K^2/\pi^2w^2R)^{1/3}`, from the end of the stable
-        branch :math:`\Delta_{end}` (:func:`md_branch_end`, negative) to :data:`DELTA_MAX`
-        (1e150).  May be empty.
-    lam : float
-        Maugis parameter :math:`\lambda`, scalar in ``[1e-12, 1e12]`` (:data:`LAMBDA_RANGE`).
-
-    Returns
-    -------
-    A, P, t : ndarray
-        Contact radius :math:`a(K/\pi wR^2)^{1/3}`, load :math:`P/(\pi wR)` and parameter
-        :math:`t = \sqrt{m^2-1}` at each ``delta`` (same shape).
-
-    Raises
-    ------
-    ValueError
-        If ``lam`` is not a real scalar in range, or ``delta`` is not real and finite or
-        lies outside :math:`[\Delta_{end}, 10^{150}]`.
-
-    Examples
-    --------
-    >>> A, P, t = md_solve([1.0, 4.0], 1e-8)  # near DMT: Delta = A^2, P = A^3 - 2
-    >>> [round(float(x), 2) for x in A], [round(float(x), 2) for x in P]
-    ([1.0, 2.0], [-1.0, 6.0])
-
-    References
-    ----------
-    Maugis (1992); Adams et al., Eqs (11)-(13).
-    """
-    lam = float(scalar(check_lambda(lam), "lam"))
-    delta = as_float_array(delta, "delta", allow_empty=True)
-    end = _branch_end(lam)
-    if ((delta < end.delta) | (delta > DELTA_MAX)).any():
-        raise ValueError(f"delta (penetration) must lie in [{end.delta:.17g}, {DELTA_MAX:g}] for lam={lam:g}: "
-                         f"from the end of the stable branch to DELTA_MAX; got "
-                         f"values from {delta.min():g} to {delta.max():g}")
-    t, A, P = _invert_penetration(delta, lam, end)
-    return ufunc_result((A, P, t))
-
-
-def _inverse_variable(D, end):
-    """y(Delta), falling with s = log10 t and nearly linear in s away from lambda ~ 1 (Delta >> 1
-    or near the branch end), and dy/dDelta: log(Delta - Delta_end) where the branch runs to
-    t = inf, asinh(sqrt(Delta - Delta_end)) where it ends at a minimum of Delta."""
-    x = np.maximum(D - end.delta, 1e-300)
-    if np.isinf(end.t):
-        return np.log(x), 1.0 / x
-    r = np.sqrt(x)
-    return np.arcsinh(r), 0.5 / (r * np.sqrt(1.0 + x))
-
-
-@functools.lru_cache(maxsize=256)
-def _penetration_table(lam: float, s_lo: float, s_hi: float):
-    """y (:func:`_inverse_variable`) and dy/ds on 257 points of s = log10 t in [s_lo, s_hi].
-
-    s(y) is nearly linear, so a cubic-Hermite inverse of this table is good to about 1e-9.
-    """
-    grid = np.linspace(s_lo, s_hi, 257)
-    t = 10.0**grid
-    D, dD = _md_curve(t, lam, True)[2::3]
-    y, dy = _inverse_variable(D, _branch_end(lam))
-    return grid, y, dD * t * np.log(10.0) * dy
-
-
-def _table_range(lam, end, lo, hi):
-    """Ends (s_lo, s_hi) of s = log10 t for the table, with Delta(s_lo) >= hi and (branch to
-    t = inf) Delta(s_hi) <= lo, stepping by 2 from s_hi = 2 and s_lo = min(s_hi - 1, 0): one point
-    of the curve at a time (its fast path for single floats)."""
-    s_hi = float(np.log10(end.t)) if np.isfinite(end.t) else 2.0
-    while np.isinf(end.t) and _md_curve(10.0**s_hi, lam)[2] > lo and s_hi < 300:
-        s_hi += 2.0
-    s_lo = min(s_hi - 1.0, 0.0)
-    while _md_curve(10.0**s_lo, lam)[2] < hi:
-        s_lo -= 2.0
-    return s_lo, s_hi
-
-
-def _invert_penetration(delta, lam, end):
-    """(t, A, P) on the stable branch with Delta(t) = delta (delta >= end.delta), vectorized.
-
-    A cubic-Hermite inverse of a table of y(Delta) (:func:`_inverse_variable`, cached per
-    lambda and range) gives each start; safeguarded Newton on y in log10 t finishes, usually
-    in one or two steps, also next to the branch end where Delta(t) is flat but y is not.
-    """
-    flat = delta.ravel()
-    t_out, A_out, P_out = (np.full_like(flat, x) for x in (end.t, end.A, end.P))
-    todo = np.flatnonzero(flat > end.delta)
-    if todo.size == 0:
-        return (x.reshape(delta.shape) for x in (t_out, A_out, P_out))
-    target = flat[todo]
-    s_lo, s_hi = _table_range(lam, end, float(target.min()), float(target.max()))
-    grid, ygrid, slope = _penetration_table(lam, float(s_lo), float(s_hi))
-    # Table look-up for a bracket [a, b] and a cubic-Hermite start for s(y).
-    y = _inverse_variable(target, end)[0]
-    j = np.clip(np.searchsorted(-ygrid, -y), 1, grid.size - 1)
-    a, b = grid[j - 1], grid[j]
-    D0, D1 = ygrid[j - 1], ygrid[j]
-    x = (y - D0) / (D1 - D0)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        H = ((2 * x - 3) * x * x + 1) * a + (3 - 2 * x) * x * x * b \
-            + (D1 - D0) * x * (1 - x) * ((1 - x) / slope[j - 1] - x / slope[j])
-    s = np.where(np.isfinite(H) & (H >= a) & (H <= b), H, a + (b - a) * x)
-    active = np.arange(target.size)
-    for _ in range(100):
-        if active.size == 0:
-            break
-        sa = s[active]
-        t = 10.0**sa
-        A, P, D, dA, dP, dD = _md_curve(t, lam, True)
-        resid = D - target[active]
-        # Keep the bracket: Delta decreases with s.
-        a[active] = np.where(resid > 0, sa, a[active])
-        b[active] = np.where(resid < 0, sa, b[active])
-        yD, dy = _inverse_variable(D, end)
-        slope = dD * t * np.log(10.0) * dy  # dy/ds
-        with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(slope < 0, -(yD - y[active]) / slope, np.nan)
-        s_new = sa + step
-        bad = ~np.isfinite(s_new) | (s_new < a[active]) | (s_new > b[active])
-        s_new = np.where(bad, 0.5 * (a[active] + b[active]), s_new)
-        tol = 1e-14 * np.maximum(1.0, np.abs(sa))
-        # Stop at a residual at rounding level (near the branch end Delta(t) is flat and the
-        # step cannot shrink below rounding), a tiny step or a collapsed bracket.
-        done = ((np.abs(resid) <= 1e-15 * np.maximum(np.abs(D), np.abs(target[active])))
-                | (~bad & (np.abs(step) <= tol)) | (b[active] - a[active] <= tol))
-        # A finished step is tiny: carry A and P along it to first order.
-        dt = np.where(bad, 0.0, 10.0**s_new - t)[done]
-        fin = todo[active[done]]
-        t_out[fin], A_out[fin], P_out[fin] = t[done] + dt, A[done] + dA[done] * dt, P[done] + dP[done] * dt
-        s[active] = s_new
-        active = active[~done]
-    return (x.reshape(delta.shape) for x in (t_out, A_out, P_out))
+    return _branch_points(_branch_end, lam)
 
 
 def md_pull_off(lam, control: str = "load") -> BranchPoint:
@@ -370,8 +297,8 @@ def md_pull_off(lam, control: str = "load") -> BranchPoint:
 
     Parameters
     ----------
-    lam : float
-        Maugis parameter :math:`\lambda`, scalar in ``[1e-12, 1e12]`` (:data:`LAMBDA_RANGE`).
+    lam : array_like
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]`` (:data:`LAMBDA_RANGE`).
     control : {'load', 'displacement'}
         ``'load'`` (default): the minimum of :math:`P` over the whole curve (JKR: :math:`-3/2`
         at :math:`A = (3/2)^{1/3}`; DMT: :math:`-2`).  ``'displacement'``: the load at the end
@@ -381,7 +308,8 @@ def md_pull_off(lam, control: str = "load") -> BranchPoint:
     -------
     BranchPoint
         Where pull-off happens: ``t``, ``A``, ``delta``, and ``P`` the (negative) pull-off
-        load :math:`P/(\pi wR)`.
+        load :math:`P/(\pi wR)`; floats for a scalar ``lam``, arrays of its shape otherwise
+        (the adhesion map's pull-off against :math:`\lambda` is one call).
 
     Raises
     ------
@@ -397,12 +325,9 @@ def md_pull_off(lam, control: str = "load") -> BranchPoint:
     ----------
     Maugis (1992), Johnson & Greenwood (1997).
     """
-    lam = float(scalar(check_lambda(lam), "lam"))
     if not isinstance(control, str) or control not in ("load", "displacement"):
         raise ValueError(f"control must be 'load' or 'displacement', got {control!r}")
-    if control == "displacement":
-        return _branch_end(lam)
-    return _load_pull_off(lam)
+    return _branch_points(_branch_end if control == "displacement" else _load_pull_off, lam)
 
 
 @functools.lru_cache(maxsize=1024)

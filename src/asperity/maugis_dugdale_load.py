@@ -39,9 +39,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, scalar, ufunc_result
+from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, ufunc_result
 from ._validation_files import short_repr
 from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
+from .maugis_dugdale_branch import for_each_lambda
 from .maugis_units import penetration_in_maugis_units
 from .units import to_si
 
@@ -64,7 +65,7 @@ def md_solve_load(P, lam):
     .. math::
         P(t) = P,\qquad 0 < t \le t_{po},\qquad \Delta = A^2 - \tfrac43\lambda At
 
-    Vectorized over ``P``.
+    Broadcasts like a ufunc over ``P`` and ``lam`` (one inversion per distinct :math:`\lambda`).
 
     Parameters
     ----------
@@ -72,22 +73,22 @@ def md_solve_load(P, lam):
         Load :math:`P/(\pi wR)` (negative: tensile), from the load-controlled pull-off
         :math:`P_{po}` (JKR: -3/2, DMT: -2; within 1e-12 relative below it counts as it) to
         :data:`P_MAX`.  May be empty.
-    lam : float
-        Maugis parameter :math:`\lambda`, scalar in ``[1e-12, 1e12]``
-        (:data:`~asperity.maugis_dugdale.LAMBDA_RANGE`).
+    lam : array_like
+        Maugis parameter :math:`\lambda` in ``[1e-12, 1e12]``
+        (:data:`~asperity.maugis_dugdale.LAMBDA_RANGE`), broadcast with ``P``.
 
     Returns
     -------
-    A, delta, t : ndarray
+    A, delta, t : ndarray or numpy.float64
         Contact radius :math:`a(K/\pi wR^2)^{1/3}`, penetration
         :math:`\Delta = u(K^2/\pi^2w^2R)^{1/3}` and :math:`t = \sqrt{m^2-1}` at each load
-        (the shape of ``P``).
+        (the broadcast shape).
 
     Raises
     ------
     ValueError
-        If ``lam`` is not a real scalar in range, or ``P`` is not real and finite or lies
-        outside :math:`[P_{po}, 10^{200}]`.
+        If ``lam`` is not real or out of range, ``P`` is not real and finite or lies
+        outside :math:`[P_{po}(\lambda), 10^{200}]`, or the shapes do not broadcast.
 
     Examples
     --------
@@ -99,8 +100,14 @@ def md_solve_load(P, lam):
     ----------
     Maugis (1992); Johnson & Greenwood (1997); Adams et al., Eqs (11)-(13).
     """
-    lam = float(scalar(check_lambda(lam), "lam"))
+    lam = check_lambda(lam)
     P = as_float_array(P, "P", allow_empty=True)
+    check_broadcast(P=P, lam=lam)
+    return ufunc_result(for_each_lambda(_solve_load_one, lam, P, outputs=3))
+
+
+def _solve_load_one(lam: float, P):
+    """(A, delta, t) at loads ``P`` for one lambda."""
     po = md_pull_off(lam, "load")
     # A load within rounding (1e-12 relative) below the pull-off, as a round trip through SI
     # units gives, is the pull-off itself.
@@ -111,7 +118,7 @@ def md_solve_load(P, lam):
     t = _invert_load(P, lam, po)
     finite = np.isfinite(t)
     A, _, D = md_curve(np.where(finite, t, 1.0), lam)
-    return ufunc_result((np.where(finite, A, po.A), np.where(finite, D, po.delta), t))
+    return np.where(finite, A, po.A), np.where(finite, D, po.delta), t
 
 
 def _invert_load(P, lam, po):
@@ -190,24 +197,6 @@ def _scales(R, w, E_star, sigma0, lam):
     return R, w, E_star, lam
 
 
-def _per_lambda(solve, lam, *arrays):
-    """``solve(lam, *arrays)`` with a scalar lambda, over each group of equal lambdas.
-
-    ``arrays`` are broadcast with ``lam`` first; the result has their common shape.
-    """
-    arrays = np.broadcast_arrays(lam, *arrays)
-    lam, arrays = arrays[0], arrays[1:]
-    values = np.unique(lam)
-    if values.size <= 1:
-        out = np.asarray(solve(float(values[0]) if values.size else 1.0, *arrays), dtype=float)
-        return out if out.shape == lam.shape else np.broadcast_to(out, lam.shape).copy()
-    out = np.empty(lam.shape)
-    for value in values:
-        mask = lam == value
-        out[mask] = solve(float(value), *(a[mask] for a in arrays))
-    return out
-
-
 def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     r"""Contact radius of a Maugis-Dugdale sphere on a flat at load :math:`P` (load control), in metres.
 
@@ -265,7 +254,7 @@ def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     with np.errstate(all="ignore"):
         P_hat = P / (np.pi * w * R)
     check_finite_result(P_hat, "the load P/(pi w R)", P=P, R=R, w=w)
-    A = _per_lambda(lambda x, p: md_solve_load(p, x)[0], lam, P_hat)
+    A = md_solve_load(P_hat, lam)[0]
     with np.errstate(all="ignore"):
         a = A * np.cbrt(np.pi * w * R * R / K)
     return check_finite_result(a, "the Maugis-Dugdale contact radius", P=P, R=R, w=w, E_star=E_star)
@@ -325,7 +314,7 @@ def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
     check_broadcast(delta=delta, R=R, w=w, E_star=E, lam=lam)
     delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E)
     with np.errstate(all="ignore"):
-        F = _per_lambda(lambda x, d: md_solve(d, x)[1], lam, delta_hat) * unit
+        F = md_solve(delta_hat, lam)[1] * unit
     return check_finite_result(F, "the Maugis-Dugdale force", delta=delta, R=R, w=w, E_star=E_star)
 
 
@@ -383,7 +372,7 @@ def md_pull_off_force(*, R, w, E_star, sigma0=None, lam=None, control: str = "lo
     """
     R, w, E, lam = _scales(R, w, E_star, sigma0, lam)
     shape = check_broadcast(R=R, w=w, E_star=E, lam=lam)
-    P_po = _per_lambda(lambda x, _: md_pull_off(x, control).P, lam, np.broadcast_to(R, shape))
+    P_po = np.broadcast_to(md_pull_off(lam, control).P, shape)
     with np.errstate(all="ignore"):
         F = -(P_po * np.pi) * w * R
     F = check_finite_result(F, "the pull-off force", w=w, R=R)
