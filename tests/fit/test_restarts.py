@@ -17,20 +17,40 @@ from asperity.materials import material  # noqa: E402
 from asperity.physical import PhysicalContact, Surface  # noqa: E402
 
 
-def test_restart_points_move_each_free_log_parameter_a_decade_both_ways():
+def test_restart_points_move_each_free_parameter_both_ways():
     params = lmfit.Parameters()
     params.add("log10_w", value=-0.5, min=-300, max=300)
     params.add("log10_tau", value=9.0, min=-300, max=9.5)  # +1 decade leaves the bound: left out
-    params.add("x", value=2.0, min=0, max=10)  # linear: kept
+    params.add("x", value=2.0, min=0, max=10)  # linear, bounded: a tenth in from each bound
+    params.add("y", value=-4.0)  # linear, open: half its value either way
+    params.add("z", value=0.0, min=-1.0)  # linear, open side, at 0: left
     params.add("log10_fixed", value=1.0, vary=False)
     params.add("w", expr="10**log10_w")
     starts = restart_points(params)
-    moved = sorted((name, round(p[name].value - params[name].value, 12))
-                   for p in starts for name in ("log10_w", "log10_tau", "x", "log10_fixed")
+    moved = sorted((name, round(p[name].value, 12))
+                   for p in starts for name in ("log10_w", "log10_tau", "x", "y", "z", "log10_fixed")
                    if p[name].value != params[name].value)
-    assert moved == [("log10_tau", -RESTART_DECADES), ("log10_w", -RESTART_DECADES), ("log10_w", RESTART_DECADES)]
+    assert moved == [("log10_tau", 9.0 - RESTART_DECADES), ("log10_w", -0.5 - RESTART_DECADES),
+                     ("log10_w", -0.5 + RESTART_DECADES), ("x", 1.0), ("x", 9.0), ("y", -6.0), ("y", -2.0)]
     assert all(sum(p[n].value != params[n].value for n in params if params[n].expr is None) == 1 for p in starts)
     assert params["log10_w"].value == -0.5  # the original is not touched
+
+
+def test_a_cos_fit_stuck_in_a_local_minimum_is_restarted_out_of_it():
+    """Found by a review: COS data of alpha_t = 0 fitted from the default start stopped at
+    alpha_t = 0.3 with chi-square 69 for 37 degrees of freedom; restarts moved only the
+    log-scaled F0 and stayed there.  Moving alpha_t and Pc too reaches the truth."""
+    from asperity.cos import cos_friction
+
+    P = np.linspace(-14e-9, 100e-9, 40)
+    F = cos_friction(P, F0=20e-9, Pc=-15e-9, alpha_t=0.0)
+    noise = np.random.default_rng(2).normal(size=(37, 40))[-1]
+    data = friction_load_data(P, F * (1 + 0.03 * noise), F_err=0.03 * F, physical=True)
+    stuck = fit_friction_load(data, "cos", restarts="never")
+    res = fit_friction_load(data, "cos")
+    assert res.chisqr < 0.6 * stuck.chisqr
+    assert res.values["Pc_N"] == pytest.approx(-15e-9, rel=0.03) and res.values["alpha_t"] < 0.05
+    assert any("a restart from another start reached" in w for w in res.warnings)
 
 
 SURFACE = Surface(sigma_s=2e-9, R=300e-9, eta=3e13, area=4e-12)

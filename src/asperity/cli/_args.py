@@ -208,8 +208,8 @@ def add_plasticity_arguments(parser: argparse.ArgumentParser) -> None:
                         "asperities in contact is past the critical interference (default 0.01)")
 
 
-_NU_HELP = (f"{MODEL_HELP['nu']}; with a physical contact: Poisson's ratio of the (first) body, replacing "
-            "the table's")
+_NU_HELP = (f"{MODEL_HELP['nu']} (the default of the dimensionless model); with a physical contact: Poisson's "
+            "ratio of the (first) body, replacing the table's, no default (a body of your own, --E, needs it)")
 
 
 def _help(name: str, extra: str = "", symbol: str | None = None) -> str:

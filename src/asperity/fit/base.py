@@ -41,6 +41,9 @@ class ParameterSpec:
         Unit (SI for physical parameters).
     meaning : str
         One line, from the registry.
+    lo_inclusive, hi_inclusive : bool
+        Whether the bounds themselves are valid values (the registry's; 0 is a valid work
+        of adhesion, not a valid radius).
     """
 
     name: str
@@ -51,6 +54,22 @@ class ParameterSpec:
     log: bool = False
     unit: str = "1"
     meaning: str = ""
+    lo_inclusive: bool = True
+    hi_inclusive: bool = True
+
+    def valid(self, value: float) -> bool:
+        """True if ``value`` lies in the parameter's valid range (bounds included where valid)."""
+        above = value >= self.lo if self.lo_inclusive else value > self.lo
+        below = value <= self.hi if self.hi_inclusive else value < self.hi
+        return bool(above and below)
+
+    def range_text(self) -> str:
+        """The valid range as text, e.g. ``'0 < R_m < inf'``."""
+        left = "" if self.lo == -math.inf else f"{self.lo:g} {'<=' if self.lo_inclusive else '<'} "
+        right = "" if self.hi == math.inf else f" {'<=' if self.hi_inclusive else '<'} {self.hi:g}"
+        if self.hi == math.inf and self.lo != -math.inf:
+            right = " < inf"
+        return f"{left}{self.name}{right}" if left or right else f"{self.name} real"
 
 
 def parameter_spec(qname: str, value, *, physical: bool, vary: bool = False, meaning=None) -> ParameterSpec:
@@ -59,7 +78,8 @@ def parameter_spec(qname: str, value, *, physical: bool, vary: bool = False, mea
     si = physical and q.si_name is not None
     return ParameterSpec(name=q.si_name if si else q.name, value=None if value is None else float(value), vary=vary,
                          lo=q.lo, hi=q.hi, log=q.log, unit=(q.si_unit if si else q.unit) or "1",
-                         meaning=q.meaning if meaning is None else meaning)
+                         meaning=q.meaning if meaning is None else meaning,
+                         lo_inclusive=q.lo_inclusive or q.lo == -math.inf, hi_inclusive=q.hi_inclusive or q.hi == math.inf)
 
 
 @dataclass(frozen=True)

@@ -111,6 +111,10 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
             p.expr = str(expr[name])
         if name in bounds:
             p.lo, p.hi = _bounds(bounds[name], name)
+        if p.value is not None and not p.spec.valid(p.value):  # before the models' starts use it
+            how = "fix" if name in fix else "start" if name in start else "default"
+            raise ValueError(f"{how} {name} = {p.value:g} is outside its valid range ({p.spec.meaning}; "
+                             f"{p.spec.range_text()})")
     _fill_starts(terms, params)
     for name, p in params.items():  # a start of ours outside the user's bounds is moved inside
         if p.vary and p.expr is None and name not in start and p.value is not None and not p.lo <= p.value <= p.hi \
