@@ -307,3 +307,18 @@ def test_jackson_green_law_of_the_dimensionless_gw_fit(capsys, tmp_path):
                           (["--law", "jackson-green", "--hardness", "hard"], "--hardness: expected a number")):
         code, out, err = run(capsys, "fit", str(path), *extra)
         assert out == "" and one_line_error(code, err, needle), (extra, err)
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["--fix", "E_star_Pa=50GPa,R_m=0"], "fix R_m = 0 is outside its valid range (tip (sphere) radius; 0 < R_m < inf)"),
+    (["--fix", "E_star_Pa=50GPa,R_m=-20nm"], "fix R_m = -2e-08 is outside its valid range"),
+    (["--R", "0nm", "--E", "50GPa", "--nu", "0.3"], "R_m = 0 is outside its valid range"),
+    (["--fix", "E_star_Pa=50GPa,R_m=20nm", "--start", "w_J_m2=-1"], "start w_J_m2 = -1 is outside its valid range"),
+])
+def test_a_held_value_outside_its_range_is_named_before_the_starts_use_it(capsys, afm, argv, needle):
+    """Found by a review: R = 0 raised ZeroDivisionError (a traceback, status 1) in the data-driven
+    start of w, and a negative R was reported as a negative w."""
+    code, _, err = run(capsys, "fit", str(afm), "--model", "jkr", *argv)
+    assert one_line_error(code, err, needle), err
+    with pytest.raises(ValueError, match="R_m = 0 is outside its valid range"):
+        fit.fit_friction_load(fit.read_data(str(afm)), "jkr", fix={"E_star_Pa": 5e10, "R_m": 0.0})

@@ -224,3 +224,53 @@ def test_a_profile_whose_root_search_fails_keeps_the_wald_interval_and_says_so(m
         assert p.method == "wald" and p.ci95 == wald.parameters[name].ci95 and "profile failed" in p.note
         assert any(m.startswith(f"{name}: the profile likelihood could not be computed (f(a) and f(b) must have")
                    for m in res.warnings)
+
+
+def _jkr_radius_by_hand(P, R, E_star, w):
+    """JKR contact radius, a^3 = (R/K)(P + 3 pi w R + sqrt(6 pi w R P + (3 pi w R)^2)) (Johnson 1985, Eq 5.60)."""
+    K, L = 4.0 / 3.0 * E_star, 3.0 * math.pi * w * R
+    return np.cbrt(R / K * (P + L + np.sqrt(np.maximum(2.0 * L * P + L * L, 0.0))))
+
+
+def test_a_load_uncertainty_next_to_the_pull_off_keeps_that_point_in_the_fit():
+    """Found by a review: with a load uncertainty column, the effective variance took the
+    tangent dF/dP, infinite at the pull-off, so the fit put the pull-off exactly at the
+    lowest load (w = 0.19597 for 0.2, standard error 6.6e-5 where the scatter is 3e-3).
+    The secant over +-sigma_P keeps the point's residual: w within its interval of 0.2."""
+    R_, E_, w_, tau = 20e-9, 50e9, 0.2, 1e9
+    P = np.linspace(-18e-9, 100e-9, 40)
+    F = tau * math.pi * _jkr_radius_by_hand(P, R_, E_, w_) ** 2
+    rng = np.random.default_rng(0)
+    for _ in range(23):  # the review's 23rd draw
+        Pm, Fm = P + 0.5e-9 * rng.normal(size=40), F * (1 + 0.03 * rng.normal(size=40))
+    data = friction_load_data(Pm, Fm, F_err=0.03 * F, P_err=np.full(40, 0.5e-9), physical=True)
+    res = fit_friction_load(data, "jkr", fix={"E_star_Pa": E_, "R_m": R_})
+    p = res.parameters["w_J_m2"]
+    assert p.stderr > 1e-3  # the scatter of w over noise draws is about 3e-3
+    lo, hi = p.ci95
+    assert lo is not None and hi is not None and lo < w_ < hi
+    assert p.value != pytest.approx(-float(np.min(Pm)) / (1.5 * math.pi * R_), rel=1e-4)  # not locked on it
+
+
+def test_the_profile_of_a_parameter_near_zero_reaches_its_level():
+    """Found by a review: Amontons data with no offset load, P0 = 0.27 +- 0.78 nN, got no
+    95 % limit on either side (lmfit's conf_interval stepped by 0.2 |P0|, 20 steps).  On the
+    side where no load is clamped (P0 > 0), the model is F = mu0 (P + P0), linear in mu0 at
+    fixed P0, so the profile is a closed form: the interval's upper end must equal it."""
+    from scipy import optimize
+
+    P = np.array([0.0, 10.0, 20.0, 30.0, 40.0]) * 1e-9
+    F = np.array([0.1, 3.2, 5.9, 9.1, 12.2]) * 1e-9
+    s = 0.3e-9
+    res = fit_friction_load(friction_load_data(P, F, F_err=np.full(5, s), physical=True), "amontons")
+
+    def chi2(P0):  # mu0 at its best for this P0: weighted linear least squares through the origin
+        x = P + P0
+        mu0 = np.sum(x * F) / np.sum(x * x)
+        return float(np.sum(((mu0 * x - F) / s) ** 2))
+
+    best = optimize.minimize_scalar(chi2, bracket=(0.0, 1e-9)).fun
+    upper = optimize.brentq(lambda x: chi2(x) - best - stats.chi2.ppf(0.95, 1), 0.3e-9, 10e-9, xtol=1e-18)
+    p = res.parameters["P0_N"]
+    assert p.method == "profile" and p.ci95[0] is not None and p.ci95[0] < 0
+    assert p.ci95[1] == pytest.approx(upper, rel=1e-5)
