@@ -80,14 +80,16 @@ def test_units_and_metadata_come_from_the_registry(serial):
 def test_domain_error_becomes_nan_and_a_message():
     # gamma = 0 cannot carry a tensile load; a too weak adhesion leaves the Maugis range.
     ds = asperity.sweep(alpha=0.003, beta=1000.0, gamma=[0.0, 1e-3, 1e-30], P=[-1.0, 10.0], scheduler="serial")
-    msg = ds.message.values
-    assert "must be > 0 without adhesion" in msg[0]
-    assert msg[1] == ""
-    assert "lambda" in msg[2] and "outside" in msg[2]
-    assert np.isnan(ds.mu.values[[0, 2]]).all() and np.isnan(ds.pull_off.values[[0, 2]]).all()
+    assert ds.gamma.values.tolist() == [0.0, 1e-30, 1e-3]  # stored in increasing order
+    msg = {g: ds.message.sel(gamma=g).item() for g in (0.0, 1e-3, 1e-30)}
+    assert "must be > 0 without adhesion" in msg[0.0]
+    assert msg[1e-3] == ""
+    assert "lambda" in msg[1e-30] and "outside" in msg[1e-30]
+    bad = ds.sel(gamma=[0.0, 1e-30])
+    assert np.isnan(bad.mu.values).all() and np.isnan(bad.pull_off.values).all()
     c, po = loop_cell(0.003, 1000.0, 1e-3, [-1.0, 10.0])
-    np.testing.assert_array_equal(ds.F.values[1], c.F)
-    assert ds.pull_off.values[1] == po.force
+    np.testing.assert_array_equal(ds.F.sel(gamma=1e-3).values, c.F)
+    assert ds.pull_off.sel(gamma=1e-3).item() == po.force
 
 
 def test_points_from_a_dict_and_from_csv(tmp_path):
@@ -404,3 +406,41 @@ def test_an_error_of_the_computation_is_not_called_a_write_error(tmp_path, monke
     monkeypatch.setattr(run_module, "compute_chunk", broken)
     with pytest.raises(NotImplementedError, match="a bug in a chunk"):
         asperity.sweep(**grid(out=str(tmp_path / "b.nc")))
+
+
+def test_a_grid_given_out_of_order_is_stored_in_increasing_order(tmp_path):
+    """Found by a review: an unsorted grid was stored as given, so nearest selection failed
+    ('index must be monotonic') and `asperity plot` drew cells in the wrong places."""
+    ds = asperity.sweep(alpha=[0.1, 0.001, 0.01], beta=1000.0, gamma=[1e-2, 1e-5], P=[10.0, 1.0], scheduler="serial")
+    assert ds.alpha.values.tolist() == [0.001, 0.01, 0.1] and ds.gamma.values.tolist() == [1e-5, 1e-2]
+    assert ds.P.values.tolist() == [1.0, 10.0]
+    assert ds.mu.sel(P=9.0, method="nearest").shape == (3, 2)
+    for a in (0.1, 0.001):
+        m = asperity.Model(alpha=a, beta=1000.0, gamma=1e-5)
+        np.testing.assert_array_equal(ds.F.sel(alpha=a, gamma=1e-5).values, m.load_curve([1.0, 10.0]).F)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    ({"out": "map.csv"}, r"out must end in .nc \(a NetCDF file\) or .zarr"),
+    ({"out": "map"}, r"out must end in .nc"),
+])
+def test_an_output_that_is_neither_netcdf_nor_zarr_is_refused(tmp_path, kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        asperity.sweep(alpha=0.01, beta=1000.0, P=[1.0], scheduler="serial", out=str(tmp_path / kwargs["out"]))
+    assert os.listdir(tmp_path) == []
+
+
+def test_a_misspelt_material_is_refused_before_the_sweep():
+    with pytest.raises(ValueError, match=r"^material: unknown material 'Xx'; known: Au"):
+        asperity.sweep(material=["Au", "Xx"], sigma_s=2e-9, R=1e-6, eta=1e12, area=1e-6, P=[1e-3],
+                       scheduler="serial")
+
+
+def test_a_zarr_result_opens_without_warnings(tmp_path):
+    """Found by a review: without consolidated metadata every xr.open_zarr warned."""
+    xr = pytest.importorskip("xarray")
+    pytest.importorskip("zarr")
+    asperity.sweep(alpha=[0.01, 0.02], beta=1000.0, P=[1.0], scheduler="serial", out=str(tmp_path / "m.zarr"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert xr.open_zarr(tmp_path / "m.zarr").mu.shape == (2, 1)

@@ -75,6 +75,9 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
     if z not in ds.data_vars or z in ("message", "chunk_done"):
         raise UsageError(f"--z: {z!r} is not a variable of the sweep; it has "
                          f"{', '.join(v for v in ds.data_vars if v not in ('message', 'chunk_done'))}")
+    # stores written before sweeps sorted their grids may hold a dimension out of order:
+    # nearest selection and the cell edges need increasing coordinates
+    ds = ds.sortby([d for d in ds[z].dims if d in ds.coords and ds[d].dtype != object])
     var = ds[z]
     for option, name in (("--x", x), ("--y", y)):
         if name not in var.dims:

@@ -261,6 +261,9 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
         if isinstance(text, str) and text.rstrip("/").endswith(".zarr"):
             out = text.rstrip("/")  # 'map.zarr/' is the directory map.zarr (its partial beside it)
         out = check_output_path(out, "out", directory=str(out).endswith(".zarr"))
+        if not str(out).endswith((".nc", ".zarr")):  # any other name was silently NetCDF (a review)
+            raise ValueError(f"out must end in .nc (a NetCDF file) or .zarr (a Zarr directory), got {str(out)!r}; "
+                             "a table of the results: xarray's Dataset.to_dataframe() on the result")
     spec = make_spec(parameters, points=points, P=P, d=d, chunk_sets=chunk_sets)
     if not (scheduler is None or isinstance(scheduler, str) or hasattr(scheduler, "submit")):
         raise ValueError(f"scheduler must be None, 'serial', 'local', a scheduler address or a distributed.Client, "

@@ -34,6 +34,7 @@ import numpy as np
 from .._validation import as_float_array, check_path
 from .._validation_files import short_repr
 from .._version import __version__
+from ..materials import material
 from ..quantities import CURVE_COLUMNS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 from ..units import strict_float
 
@@ -204,7 +205,7 @@ def _axis_values(kind, P, d):
         raise ValueError(f"{name} must hold at most {MAX_CURVE_POINTS} values (points of each curve), got "
                          f"{values.size}")
     _distinct(name, values)
-    return name, values
+    return name, np.sort(values)  # increasing, as the grid's dimensions
 
 
 def _distinct(name, values) -> None:
@@ -222,6 +223,11 @@ def _parameter(name, value, kind):
             else None
         if not names or not all(isinstance(v, str) for v in names):
             raise ValueError(f"material must be a material name or a list of names, got {value!r}")
+        for one in names:  # a misspelt name is refused before the sweep, not stored as a failed set
+            try:
+                material(one)
+            except ValueError as err:
+                raise ValueError(f"material: {err}") from None
         return names[0] if isinstance(value, str) else np.array(names, dtype=object)
     q = PHYSICAL_PARAMETERS[name] if kind == "physical" else MODEL_PARAMETERS[name]
     arr = as_float_array(value, name)
@@ -287,6 +293,9 @@ def make_spec(parameters: dict, *, points=None, P=None, d=None, chunk_sets=None)
         coords = {n: values[n] for n in allowed if isinstance(values.get(n), np.ndarray)}
         for n, v in coords.items():  # a grid's dimensions (a list of points may repeat values)
             _distinct(n, v)
+        # in increasing order, whatever the order given: xarray's nearest selection and the
+        # plots' cell edges need monotonic coordinates (a review: an unsorted grid drew a wrong map)
+        coords = {n: v if v.dtype == object else np.sort(v) for n, v in coords.items()}
         dims = tuple(coords) or ("point",)
         if not coords:  # a single set
             coords = {required[0]: np.atleast_1d(constants.pop(required[0]))}

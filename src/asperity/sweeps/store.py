@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import os
 import shutil
+import textwrap
 
 import numpy as np
 
@@ -243,6 +244,9 @@ class ZarrStore(MemoryStore):
             self.partial, region={"chunk": slice(k, k + 1)}, consolidated=False)
 
     def finish(self):
+        # consolidated metadata, so that xr.open_zarr's default finds it (without, every open
+        # warned: found by a review); written in the partial store, before it becomes the result
+        require("zarr", purpose=_PURPOSE).consolidate_metadata(self.partial, zarr_format=2)
         if os.path.exists(self.path):
             shutil.rmtree(self.path)
         os.replace(self.partial, self.path)
@@ -266,7 +270,7 @@ def _stored_fingerprint(path: str, zarr: bool) -> str | None:
         with xr.open_dataset(path) as ds:
             return ds.attrs.get("sweep_fingerprint")
     except Exception as err:  # noqa: BLE001 - whatever the backends say, it is no sweep store
-        reason = " ".join(str(err).split())[:200]
+        reason = textwrap.shorten(" ".join(str(err).split()), 200, placeholder=" ...")
         raise ValueError(f"{path} is not a sweep store ({type(err).__name__}: {reason}); choose another output "
                          "or delete it") from None
 
