@@ -21,8 +21,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--material", help="material name for alpha, beta (its Burgers vector b)")
     parser.add_argument("--b", help="Burgers vector, a length (e.g. 0.2885nm), instead of --material")
     parser.add_argument("--summits", metavar="FILE", type=output_file,
-                        help="also write the detected summit heights (metres, one per line) to FILE, for "
-                             "--heights empirical:FILE or best:FILE")
+                        help="also write the detected summit heights (metres, one per line after the header "
+                             "line z_m) to FILE, for --heights empirical:FILE or best:FILE")
     parser.add_argument("--format", choices=("table", "json"), default=None,
                         help="output format (default: a readable summary on a terminal, JSON otherwise)")
     parser.add_argument("-o", "--output", metavar="FILE", type=output_file,

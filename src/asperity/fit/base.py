@@ -79,7 +79,8 @@ def parameter_spec(qname: str, value, *, physical: bool, vary: bool = False, mea
     return ParameterSpec(name=q.si_name if si else q.name, value=None if value is None else float(value), vary=vary,
                          lo=q.lo, hi=q.hi, log=q.log, unit=(q.si_unit if si else q.unit) or "1",
                          meaning=q.meaning if meaning is None else meaning,
-                         lo_inclusive=q.lo_inclusive or q.lo == -math.inf, hi_inclusive=q.hi_inclusive or q.hi == math.inf)
+                         lo_inclusive=q.lo_inclusive or q.lo == -math.inf,
+                         hi_inclusive=q.hi_inclusive or q.hi == math.inf)
 
 
 @dataclass(frozen=True)
