@@ -273,3 +273,13 @@ def test_every_si_function_takes_quantities():
     assert roughness_alpha(4.0, 1000.0) == pytest.approx(roughness_alpha(4 * u.nm, 1 * u.um), rel=1e-15)
     np.testing.assert_allclose(roughness_alpha(["4nm", "9nm"], [1 * u.um, "1um"]), np.sqrt([4e-3, 9e-3]),
                                rtol=1e-15)
+
+
+@given(st.decimals(min_value="0.001", max_value="100000", places=6, allow_nan=False, allow_infinity=False),
+       st.sampled_from([("nm", -9, "m"), ("um", -6, "m"), ("pm", -12, "m"), ("mN", -3, "N"), ("uN", -6, "N"),
+                        ("GPa", 9, "Pa"), ("mJ/m^2", -3, "J/m^2")]))
+def test_a_prefixed_unit_reads_as_the_number_with_its_exponent(number, prefixed):
+    """Found by a review: '3.3nm' was 3.2999999999999998e-09 (3.3 rounded, then divided by
+    1e9), '3.3e-9m' 3.3e-09; a quarter of the spellings sampled were one ulp off."""
+    unit_text, k, unit = prefixed
+    assert parse_quantity(f"{number}{unit_text}", unit, "x") == float(f"{number}e{k}")

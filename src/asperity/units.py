@@ -19,6 +19,7 @@ import functools
 import math
 import re
 import unicodedata
+from decimal import Decimal
 
 import numpy as np
 
@@ -271,8 +272,9 @@ def _decimal_scaled(number: float, unit_text: str, unit: str, name: str, registr
     """``number`` times the unit ``unit_text`` in ``unit``, or None if ``unit_text`` is not one
     plain unit (an expression such as 'm + 2 m': the whole text then goes to pint).  A decimal
     factor (an SI prefix: 1e-9 for nm; 1e12 for um^-2) divides by the exact power of ten
-    instead of multiplying by its rounded reciprocal, so that '60nm' is 6e-08 as '6e-8m' is,
-    not 6.000000000000001e-08, and '1/um^2' is 1e12."""
+    instead of multiplying by its rounded reciprocal: the decimal digits of the number get the
+    prefix's exponent, so that '60nm' is 6e-08 as '6e-8m' is (not 6.000000000000001e-08),
+    '3.3nm' is 3.3e-09 as '3.3e-9m' is, and '1/um^2' is 1e12."""
     try:
         one = registry.parse_expression("1" + unit_text if unit_text.startswith("/") else unit_text)
     except Exception:  # noqa: BLE001 - pint's parser raises many kinds: the whole text decides
@@ -288,8 +290,9 @@ def _decimal_scaled(number: float, unit_text: str, unit: str, name: str, registr
         # pint's factor of a decimal unit may be a few ulps off its power of ten ('um^-2':
         # 1.0000000000000001e12); no unit of the registry lies that close to one without being it
         if abs(k) <= 22 and abs(factor / float(f"1e{k}") - 1.0) < 1e-14:  # 10**|k| is exact up to 1e22
-            with np.errstate(all="ignore"):
-                return number / 10.0 ** -k if k < 0 else number * 10.0 ** k
+            # in decimal: the shortest digits of the number with its exponent moved, so that '3.3nm'
+            # is float('3.3e-9'), not the rounded 3.3 divided by 1e9 (one ulp off: found by a review)
+            return float(Decimal(repr(float(number))).scaleb(k))
     return float(_convert(number * one, unit, name))
 
 

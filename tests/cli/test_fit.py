@@ -322,3 +322,53 @@ def test_a_held_value_outside_its_range_is_named_before_the_starts_use_it(capsys
     assert one_line_error(code, err, needle), err
     with pytest.raises(ValueError, match="R_m = 0 is outside its valid range"):
         fit.fit_friction_load(fit.read_data(str(afm)), "jkr", fix={"E_star_Pa": 5e10, "R_m": 0.0})
+
+
+@pytest.fixture
+def mu_file(tmp_path):
+    P = np.geomspace(1.0, 1e4, 12)
+    mu = asperity.Model(alpha=0.01, beta=1000.0, gamma=1e-3).load_curve(P).mu
+    return write(tmp_path / "mu.csv", "P,mu", zip(P, mu, strict=True))
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["--vary", "alpha", "--fix", "beta=1000", "--nu", "0.2"], "--nu: without a body"),
+    (["--vary", "alpha", "--fix", "beta=1000", "--tau-f1", "0.03"], "--tau-f1: applies only to the rough-surface"),
+    (["--vary", "alpha", "--fix", "beta=1000,beta=2000"], "--fix: beta is given twice"),
+    (["--vary", "alpha", "--start", "alpha=0.02,alpha=0.03", "--fix", "beta=1000"], "--start: alpha is given twice"),
+    (["--vary", "alpha,gamma", "--fix", "beta=1e200"], "fix beta: 1e+200 is beyond +-1e+150"),
+])
+def test_options_the_fit_would_ignore_or_overflow_on_are_refused(capsys, mu_file, argv, needle):
+    """Found by a review: --nu and --tau-f1 were accepted and ignored by the dimensionless fit,
+    the last of two --fix values was used, and fix beta=1e200 ended in lmfit's OverflowError."""
+    code, _, err = run(capsys, "fit", str(mu_file), *argv)
+    assert one_line_error(code, err, needle), err
+
+
+@pytest.mark.parametrize("extra, needle", [
+    (["--tau", "50MPa"], "--tau: applies only"), (["--b", "1nm"], "--b: applies only"),
+    (["--h", "5nm"], "--h: applies only"), (["--no-adhesion"], "--no-adhesion: applies only"),
+    (["--fix", "R_m=20nm"], "--R and --fix R_m=... set the same parameter"),
+    (["--w", "0.1J/m^2", "--fix", "w_J_m2=0.2J/m^2"], "--w and --fix w_J_m2=... set the same parameter"),
+])
+def test_a_law_fit_refuses_options_it_would_ignore(capsys, afm, extra, needle):
+    code, _, err = run(capsys, "fit", str(afm), "--model", "md", "--material", "Au", "--R", "20nm", *extra)
+    assert one_line_error(code, err, needle), err
+
+
+def test_an_open_lower_bound_of_a_log_parameter_is_its_natural_one(capsys, mu_file):
+    code, out, err = run(capsys, "fit", str(mu_file), "--vary", "alpha,gamma", "--fix", "beta=1000",
+                         "--bounds", "gamma=:0.1", "--format", "json")
+    assert code == 0, err
+    api = fit.fit_friction_load(fit.read_data(str(mu_file)), "gw", vary=["alpha", "gamma"], fix={"beta": 1000.0},
+                                bounds={"gamma": (None, 0.1)})
+    assert strict_json(out)["parameters"]["gamma"]["value"] == api.values["gamma"]
+
+
+def test_no_degrees_of_freedom_without_uncertainties_gives_no_standard_error(tmp_path):
+    """Found by a review: one point, one free parameter: standard error 0 and a zero-width interval."""
+    data = fit.read_data(str(write(tmp_path / "one.csv", "P,mu", [(10.0, 1.2)])))
+    res = fit.fit_friction_load(data, "gw", vary=["alpha"], fix={"beta": 1000.0})
+    p = res.parameters["alpha"]
+    assert p.stderr is None and p.ci95 == (None, None)
+    assert any("no degrees of freedom and no stated uncertainties" in w for w in res.warnings)

@@ -26,6 +26,37 @@ DIMENSIONLESS_GW = ("law", "hardness", "h_star")
 def _given(args, names) -> bool:
     return any(getattr(args, n, None) not in (None, False) for n in names)
 
+
+#: Options that set a fit parameter, and its name: given both ways, the option is refused.
+SETS_PARAMETER = {"R": "R_m", "w": "w_J_m2", "sigma0": "sigma0_Pa", "sigma_s": "sigma_s_m", "eta": "eta_per_m2",
+                  "area": "area_m2", "b": "b_m", "h": "h_m"}
+
+
+def _flag(name: str) -> str:
+    return f"--{name.replace('_', '-')}"
+
+
+def _refuse_unused(args, names, contact, fix, start) -> None:
+    """Options the fit would ignore, or that name a parameter --fix/--start name too: refused (a review
+    found --tau, --tau-f1, --nu, --b, --h and --no-adhesion accepted and ignored, and --R 2um with
+    --fix R_m=20nm fitted with 20 nm)."""
+    for option, param in SETS_PARAMETER.items():
+        if getattr(args, option, None) is not None and (param in fix or param in start):
+            where = "--fix" if param in fix else "--start"
+            raise UsageError(f"{_flag(option)} and {where} {param}=... set the same parameter: give it once")
+    if contact is not None:
+        return
+    unused = [_flag(n) for n in ("tau", "tau_f1", "tau_f2", "a1", "a2", "b", "h", "no_adhesion")
+              if getattr(args, n, None) not in (None, False)]
+    if unused:
+        raise UsageError(f"{', '.join(unused)}: {'applies' if len(unused) == 1 else 'apply'} only to the rough-"
+                         "surface model with a physical contact; without one, hold a dimensionless gw parameter "
+                         "with --fix (tau_f1=0.03, a1=...), and a single-asperity law fits its own tau_Pa and "
+                         "w_J_m2 (--fix w_J_m2=0 for no adhesion; md takes --sigma0)")
+    if args.nu is not None and not _given(args, ("material", "E", "material2", "E2", "nu2")):
+        raise UsageError("--nu: without a body (--material, --E) there is no Poisson's ratio to set; the "
+                         "dimensionless gw fit holds its nu with --fix nu=0.2")
+
 NAME = "fit"
 HELP = "fit a model to measured friction-load, force-separation or pull-off data"
 DESCRIPTION = ("Fit the multi-asperity model (gw) or a single-asperity friction law (hertz, jkr, dmt, md, cos, "
@@ -155,6 +186,8 @@ def _pairs(text, option):
         name, sep, value = item.partition("=")
         if not sep or not name.strip() or not value.strip():
             raise UsageError(f"{option}: expected NAME=VALUE, got {item!r}")
+        if name.strip() in out:
+            raise UsageError(f"{option}: {name.strip()} is given twice; give each name once")
         out[name.strip()] = value.strip()
     return out
 
@@ -190,6 +223,7 @@ def _options(args):
     start = {k: _value(k, v, "--start") for k, v in _pairs(args.start, "--start").items()}
     contact = material = None
     names = _model_names(args)
+    _refuse_unused(args, names, _given(args, SURFACE_ONLY) or None, fix, start)
     if _given(args, SURFACE_ONLY):  # a rough surface: the multi-asperity contact of gw
         if "gw" not in [n.strip().lower() for n in names]:
             given = ", ".join(f"--{n.replace('_', '-')}" for n in SURFACE_ONLY

@@ -132,13 +132,21 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
     return problem
 
 
+#: Largest magnitude of a held or start value: lmfit's bounded parameters overflow near 1.3e154
+#: (a review found fix beta=1e200 ending in a traceback).
+MAX_MAGNITUDE = 1e150
+
+
 def _number(value, what) -> float:
     try:
         x = float(value)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise ValueError(f"{what}: expected a number, got {value!r}") from None
     if isinstance(value, bool) or not math.isfinite(x):
         raise ValueError(f"{what}: expected a finite number, got {value!r}")
+    if abs(x) > MAX_MAGNITUDE:
+        raise ValueError(f"{what}: {x:g} is beyond +-{MAX_MAGNITUDE:g}, which the fit cannot handle (give a value "
+                         "of physical size)")
     return x
 
 
@@ -151,6 +159,9 @@ def _bounds(value, name):
     hi = math.inf if hi is None else float(hi)
     if not lo < hi or math.isnan(lo) or math.isnan(hi):
         raise ValueError(f"bounds {name}: need lo < hi, got ({lo!r}, {hi!r})")
+    if any(math.isfinite(b) and abs(b) > MAX_MAGNITUDE for b in (lo, hi)):
+        raise ValueError(f"bounds {name}: a finite bound must lie within +-{MAX_MAGNITUDE:g} (None or inf: open), "
+                         f"got ({lo!r}, {hi!r})")
     return lo, hi
 
 
@@ -201,6 +212,8 @@ def _check_values(params):
                              f"{q_lo:g} .. {q_hi:g}{', > 0: fitted in log10' if p.spec.log else ''})")
         if not (p.lo <= p.value <= p.hi):
             raise ValueError(f"the bounds of {name} [{p.lo:g}, {p.hi:g}] exclude its start value {p.value:g}")
+        if p.log and p.lo == -math.inf:  # an open lower bound ('gamma=:0.1'): the quantity's own, 0
+            p.lo = max(p.spec.lo, 0.0)
         if p.log and p.lo < 0:
             raise ValueError(f"bounds of {name}: the lower bound must be >= 0 ({name} is fitted in log10), "
                              f"got {p.lo:g}")

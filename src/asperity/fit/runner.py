@@ -253,6 +253,12 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
     else:
         cov = np.array(result.covar, dtype=float)
     se = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    no_scatter = not absolute and result.nfree <= 0  # the scatter that would scale them is not measured
+    if no_scatter:  # (a review found standard errors of 0 and zero-width intervals reported)
+        se[:] = np.nan
+        warnings.append("no degrees of freedom and no stated uncertainties: the scatter of the data is unknown, "
+                        "so no standard error or interval (add points, fix a parameter, or give an uncertainty "
+                        "column)")
     with np.errstate(divide="ignore", invalid="ignore"):
         corr = cov / np.outer(se, se)
     for i, n in enumerate(names):
@@ -281,7 +287,7 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
     quantile = stats.norm.ppf(0.975) if absolute else stats.t.ppf(0.975, max(result.nfree, 1))
     intervals, methods, want_profile = {}, {}, []
     for i, (v, n) in enumerate(zip(var_names, names, strict=True)):
-        if n in undetermined or n in at_bound:
+        if n in undetermined or n in at_bound or no_scatter:
             continue
         p = by_fitted[v]
         lo, hi = wald_interval(x[i], se[i], quantile, p.log)
