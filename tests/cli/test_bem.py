@@ -104,6 +104,8 @@ def test_table_and_progress(capsys, scan):
     (["--load", "1mN", "--interaction", "bogus"], "interaction"),
     (["--load", "1mN", "--model", "bogus"], "models"),
     (["--load", "1mN", "--model", ","], "models"),
+    (["--load", "1mN", "--model", "gw,,icha"], "models: empty name in 'gw,,icha'"),
+    (["--load", "1mN", "--model", "gw,"], "models: empty name"),
     (["--load", "1mN", "--model", "icha", "--interaction", "cgp2008"], "include 'gw'"),
     (["--load", "1mN", "--material", "Unobtainium"], "Unobtainium"),
 ])

@@ -74,3 +74,10 @@ def test_serves_on_loopback_only_and_stops_cleanly_on_ctrl_c():
     assert code == 0, err
     assert out.strip().endswith("asperity explore: stopped")
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
+
+
+def test_an_empty_host_is_refused(capsys):
+    """Found by a review: --host '' bound every interface while announcing 127.0.0.1."""
+    pytest.importorskip("bokeh")
+    code, _, err = run(capsys, "explore", "--host", "", "--port", "0", "--no-browser")
+    assert one_line_error(code, err, "host must be an address"), err

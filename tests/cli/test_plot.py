@@ -167,6 +167,7 @@ def test_heat_map_axes_and_colour_bar(sweep_file, tmp_path):
     (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=nan"], "P must be a finite number"),
     (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=inf"], "P must be a finite number"),
     (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=1", "--at", "P=10"], "P given twice"),
+    (["--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=1_0"], "NAME=VALUE with a number"),
 ])
 def test_heat_map_errors(capsys, tmp_path, sweep_file, argv, needle):
     pytest.importorskip("matplotlib")

@@ -21,7 +21,7 @@ def test_reproduce_unwritable(capsys, tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("x")
     code, _, err = run(capsys, "reproduce", "--out", str(blocker / "sub"))
-    assert code == 2 and err.count("\n") == 1 and "cannot write" in err
+    assert code == 2 and err.count("\n") == 1 and "is a file, not a directory" in err
 
 
 def test_reproduce_empty_out_is_an_error(capsys):
@@ -50,3 +50,10 @@ def test_reproduce_interrupted_leaves_no_partial_file(capsys, tmp_path, monkeypa
     assert names == ["fig3.png", "fig3.svg"]
     assert (out / "fig3.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert (out / "fig3.svg").read_text().rstrip().endswith("</svg>")
+
+
+def test_an_output_directory_in_a_missing_one_is_refused(capsys, tmp_path):
+    """Found by a review: --out /missing/dir/x made the whole path where -o, --plot, --summits
+    and sweep --out refuse a missing parent."""
+    code, _, err = run(capsys, "reproduce", "--out", str(tmp_path / "missing" / "x"))
+    assert code == 2 and "does not exist" in err and not (tmp_path / "missing").exists()

@@ -61,3 +61,36 @@ def test_surface_json_is_strict(capsys, tmp_path, scan, monkeypatch):
 def test_surface_size_list_must_be_well_formed(capsys, scan, size):
     code, _, err = run(capsys, "surface", str(scan), "--size", size)
     assert one_line_error(code, err, "--size")
+
+
+def test_a_binary_file_is_one_line_of_error(tmp_path):
+    """Found by a review: a format reader tried on a binary file logged 'could not reshape data
+    from ...' (3 kB of binary text) to standard error through logging's last resort, a second
+    line after the error."""
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    import asperity
+
+    path = tmp_path / "bin.dat"
+    path.write_bytes(bytes(range(256)) * 4)
+    # in a process of its own: pytest's log capture would stand in for logging's last resort
+    done = subprocess.run([sys.executable, "-m", "asperity.cli", "surface", str(path), "--size", "4um,4um",
+                           "--unit", "nm"], capture_output=True, text=True, timeout=120,
+                          env={**os.environ, "PYTHONPATH": str(Path(asperity.__file__).parents[1])})
+    assert one_line_error(done.returncode, done.stderr, "bin.dat: not a readable topography file"), done.stderr
+
+
+def test_summits_and_output_are_written_together_or_not_at_all(capsys, tmp_path):
+    """Found by a review: with -o in a directory that cannot be written, the summits file was
+    written anyway (exit status 2)."""
+    pytest.importorskip("SurfaceTopography")
+    scan = tmp_path / "scan.npy"
+    np.save(scan, np.random.default_rng(0).normal(size=(128, 128)))
+    summits, size = tmp_path / "summits.txt", ["--size", "4um,4um", "--unit", "nm"]
+    code, _, err = run(capsys, "surface", str(scan), *size, "--summits", str(summits), "-o", "/proc/x.json")
+    assert code == 2 and not summits.exists(), err
+    code, _, err = run(capsys, "surface", str(scan), *size, "--summits", str(summits), "-o", str(tmp_path / "s.json"))
+    assert code == 0 and summits.read_text().startswith("z_m\n") and (tmp_path / "s.json").exists(), err

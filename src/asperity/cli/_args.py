@@ -149,9 +149,16 @@ def output_file(text: str) -> str:
 
 
 def output_dir(text: str) -> str:
-    """argparse type of ``--out DIR``: not empty."""
+    """argparse type of ``--out DIR``: not empty, and its parent directory exists (DIR itself is made)."""
+    import os
+
     if text == "":
         raise argparse.ArgumentTypeError("expected a directory name, got ''")
+    parent = os.path.dirname(os.path.abspath(text))
+    if not os.path.isdir(parent):
+        what = "is a file, not a directory" if os.path.exists(parent) else "does not exist"
+        raise argparse.ArgumentTypeError(f"{os.path.dirname(text) or parent!r} {what} (the directory "
+                                         f"{os.path.basename(text)!r} is made inside an existing one)")
     return text
 
 

@@ -148,8 +148,8 @@ def _not_an_input(args, targets) -> None:
                                  "another name")
 
 
-def write_outputs(text: str, args, plot=None) -> None:
-    """Write ``text`` to ``args.output`` (or standard output) and the figure to ``args.plot``.
+def write_outputs(text: str, args, plot=None, also=()) -> None:
+    """Write ``text`` to ``args.output`` (or standard output), the figure to ``args.plot`` and any other files.
 
     Parameters
     ----------
@@ -160,6 +160,9 @@ def write_outputs(text: str, args, plot=None) -> None:
     plot : callable, optional
         ``plot(path, fmt)`` draws the figure and saves it to ``path`` in image format
         ``fmt``; called only when ``args.plot`` is set.
+    also : sequence of (path, write, what)
+        Further files: ``write(tmp)`` writes one to a temporary path, put in place with the
+        others (``asperity surface --summits``: it stayed behind when ``-o`` failed, a review).
 
     See the module docstring for the order: the figure first, nothing written unless
     everything succeeded.
@@ -173,6 +176,8 @@ def write_outputs(text: str, args, plot=None) -> None:
         raise UsageError(f"--plot {plot_path!r}: {image_format(plot_path)!r} is not an image format; give a file "
                          f"name ending in .{', .'.join(IMAGE_FORMATS)}")
     with contextlib.ExitStack() as stack:
+        for path, write, what in also:
+            write(stack.enter_context(_target(path, what)))
         if plot is not None and plot_path:
             tmp = stack.enter_context(_target(plot_path, "plot"))
             plot(tmp, image_format(plot_path))

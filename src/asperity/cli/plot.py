@@ -14,6 +14,7 @@ import math
 import os
 import warnings
 
+from .._numbers import strict_float
 from .._warnings import AsperityWarning
 from ._args import UsageError, output_file
 
@@ -42,7 +43,7 @@ def _at(items) -> dict[str, float]:
         name, sep, value = item.partition("=")
         name = name.strip()
         try:
-            number = float(value)
+            number = strict_float(value)  # as every number of the command line ('1_0' is refused)
         except ValueError:
             sep = ""
         if not sep or not name:

@@ -48,8 +48,7 @@ def run(args) -> None:
         mat = material(args.material)
     check_targets(args, output_targets(args))  # before anything is written
     result = analyse_surface(args.file, material=mat, b=b, **kwargs)
-    if args.summits:
-        result.write_summits(args.summits)
     fmt = output_format(args, piped="json")
     text = result.summary() + "\n" if fmt == "table" else format_json(result.to_dict(), indent=1)
-    write_outputs(text, args)
+    also = [(args.summits, result.write_summits, "summits file")] if args.summits else []
+    write_outputs(text, args, also=also)  # all the files or none

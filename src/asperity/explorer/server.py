@@ -13,6 +13,7 @@ all interfaces, ``0.0.0.0`` or ``::``).
 
 from __future__ import annotations
 
+import logging
 import signal
 import socket
 import webbrowser
@@ -25,7 +26,7 @@ __all__ = ["DEFAULT_PORT", "LOOPBACK", "start_server", "server_url", "serve", "f
 DEFAULT_PORT = 5006
 #: The address bound unless a host is given.
 LOOPBACK = "127.0.0.1"
-_ALL_INTERFACES = ("0.0.0.0", "::", "")
+_ALL_INTERFACES = ("0.0.0.0", "::")
 _LOCAL_NAMES = ("127.0.0.1", "localhost", "::1")
 
 
@@ -76,6 +77,9 @@ def start_server(port: int = DEFAULT_PORT, host: str = LOOPBACK):
     OSError
         If the address cannot be bound (e.g. the port is in use).
     """
+    if not isinstance(host, str) or not host.strip():  # '' bound every interface under a loopback banner
+        raise ValueError(f"host must be an address (127.0.0.1: this machine only; 0.0.0.0: every interface), "
+                         f"got {host!r}")
     require("bokeh", purpose="the explorer", extra="explore")
     from bokeh.application import Application
     from bokeh.application.handlers.function import FunctionHandler
@@ -84,8 +88,16 @@ def start_server(port: int = DEFAULT_PORT, host: str = LOOPBACK):
     from .app import make_document
 
     port = free_port(host, int(port))  # fails cleanly if taken (Tornado would leak a socket)
-    server = Server({"/": Application(FunctionHandler(make_document))}, port=port, address=host,
-                    allow_websocket_origin=_origins(host, port), num_procs=1)
+    # Bokeh logs a warning of its own for the wildcard origin of a server open to the network;
+    # serve() says so in one line of ours instead
+    wildcard = logging.getLogger("bokeh.server.util")
+    level = wildcard.level
+    wildcard.setLevel(logging.ERROR)
+    try:
+        server = Server({"/": Application(FunctionHandler(make_document))}, port=port, address=host,
+                        allow_websocket_origin=_origins(host, port), num_procs=1)
+    finally:
+        wildcard.setLevel(level)
     server.start()
     return server
 
@@ -121,7 +133,8 @@ def serve(port: int = DEFAULT_PORT, host: str = LOOPBACK, *, open_browser: bool 
             loop.asyncio_loop.add_signal_handler(sig, loop.stop)
     except (NotImplementedError, AttributeError, RuntimeError):  # no loop signal handlers (Windows)
         pass
-    announce(f"asperity explore: serving {url} (Ctrl-C to stop)")
+    announce(f"asperity explore: serving {url} (Ctrl-C to stop)"
+             + (f"; open to the network on every interface ({host})" if host in _ALL_INTERFACES else ""))
     if open_browser:
         loop.add_callback(webbrowser.open, url)
     try:

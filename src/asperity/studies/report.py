@@ -16,7 +16,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 from .._atomic import atomic_write
-from .._validation import check_callable, check_path
+from .._validation import check_callable
+from .._validation_files import check_output_path
 from .._version import __version__
 from ._common import CSV_COLUMNS, DPI, FIGSIZE, H_OVER_B, NU, csv_rows, save_figure, write_csv
 from .figures import FIGURES
@@ -226,11 +227,11 @@ def reproduce(out_dir, progress: Callable[[str], object] | None = None) -> dict:
         ``rows`` (dicts with the columns of ``table1.csv``); ``index``: the HTML path;
         ``checks_passed``, ``checks_total``; ``seconds``: the wall time.
     """
-    out = Path(check_path(out_dir, "out_dir", directory=True))
+    out = Path(check_output_path(out_dir, "out_dir", directory=True))  # its parent must exist, as for -o
     if progress is not None:
         check_callable(progress, "progress")
     t_start = time.perf_counter()
-    out.mkdir(parents=True, exist_ok=True)
+    out.mkdir(exist_ok=True)
     say = progress if progress is not None else (lambda message: None)
     files: list[str] = []
     figs: dict[int, dict] = {}

@@ -29,6 +29,8 @@ as a NASA SRTM ``.hgt`` elevation tile (which has no header) unless it is named 
 
 from __future__ import annotations
 
+import contextlib
+import logging
 import os
 import warnings
 
@@ -198,10 +200,29 @@ def _check_npy(name: str) -> str:
     return "npy"
 
 
+@contextlib.contextmanager
+def _quiet_readers():
+    """Without a logging configuration of the user's, the log records of the format readers tried
+    (igor2's 'could not reshape data from ...', 3 kB of binary text for a file it is not) would go
+    to standard error through logging's last resort: a second line after the one-line error
+    (found by a review).  A NullHandler on the root logger, while reading only, keeps them quiet;
+    a user who configured logging still gets them."""
+    root = logging.getLogger()
+    if root.handlers:
+        yield
+        return
+    quiet = logging.NullHandler()
+    root.addHandler(quiet)
+    try:
+        yield
+    finally:
+        root.removeHandler(quiet)
+
+
 def _read(st, name, fmt, physical_sizes, unit, channel_index):
     """Open ``name`` with SurfaceTopography; every failure becomes a ValueError naming the file."""
     try:
-        with open(name, "rb") as fobj, st.open_topography(fobj, format=fmt) as reader:
+        with _quiet_readers(), open(name, "rb") as fobj, st.open_topography(fobj, format=fmt) as reader:
             if type(reader).__name__ == "HGTReader" and not name.lower().endswith(".hgt"):
                 raise ValueError(f"{name}: not a readable topography file (only its size matches a headerless "
                                  f"NASA SRTM .hgt tile; name it *.hgt if it is one)")

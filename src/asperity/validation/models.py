@@ -41,7 +41,11 @@ _BEM_COLUMNS = ("P_N", "p_Pa", "fraction_bem", "area_bem_m2", "gap_bem_m", "sep_
 def check_models(models) -> tuple[str, ...]:
     """The models as a tuple of known names, in the order of :data:`MODELS` (a string: comma-separated)."""
     if isinstance(models, str):
-        models = [m.strip() for m in models.split(",") if m.strip()]
+        items = [m.strip() for m in models.split(",")]
+        if any(not m for m in items):  # 'gw,,icha': an empty item is an error, never dropped (a review)
+            raise ValueError(f"models: empty name in {models!r}; give names from {', '.join(MODELS)} separated "
+                             "by commas")
+        models = items
     try:
         names = list(models)
     except TypeError:
