@@ -133,3 +133,20 @@ def test_dataset_checks_its_arrays():
         Dataset("wear", [1.0], [1.0], "F")
     d = friction_load_data([1.0, 2.0], mu=[0.1, 0.2], physical=True)
     assert (d.x_name, d.y_name) == ("P_N", "mu")
+
+
+@pytest.mark.parametrize("header", ["load [nN],friction [nN],friction_err [nN]",
+                                    "load (nN),friction (nN),friction_err (nN)",
+                                    "load / nN,friction / nN,friction_err / nN",
+                                    "Load (nN);Friction [nN];friction_err/nN"])
+def test_units_in_brackets_parentheses_or_after_a_slash(tmp_path, header):
+    """Found by a review: 'load (nN)' and 'load / nN' (spreadsheet and ISO 80000 styles) were not
+    recognised, with a message saying the friction column was missing."""
+    sep = ";" if ";" in header else ","
+    path = tmp_path / "d.csv"
+    path.write_text(header + "\n" + f"1{sep}2{sep}0.1\n3{sep}4{sep}0.1\n")
+    d = read_data(str(path))
+    assert d.kind == "friction" and d.physical
+    np.testing.assert_array_equal(d.x, [1e-9, 3e-9])
+    np.testing.assert_array_equal(d.y, [2e-9, 4e-9])
+    np.testing.assert_array_equal(d.y_err, [1e-10, 1e-10])

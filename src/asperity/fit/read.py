@@ -5,7 +5,8 @@ r"""Reading measured data from CSV files: columns found by their header names an
 * dimensionless: ``P``, ``F`` or ``mu``, ``d``, ``P_off``, with ``F_err``, ``mu_err``,
   ``P_err``, ``d_err``, ``P_off_err``;
 * physical, the unit in brackets: ``load [mN]``, ``friction [nN]``, ``separation [nm]``,
-  ``pull_off [nN]``, ``friction_err [nN]``, or in SI names: ``P_N``, ``F_N``, ``d_m``.
+  ``pull_off [nN]``, ``friction_err [nN]`` (or in parentheses, ``load (mN)``, or after a
+  slash, ``load / mN``), or in SI names: ``P_N``, ``F_N``, ``d_m``.
   Other spellings: ``normal_force``/``force`` (load), ``friction_force``/``lateral_force``,
   ``friction_coefficient``, ``distance``/``gap`` (separation), ``pull_off_force``/
   ``adhesion_force``.  A physical column without a unit takes one from ``units``
@@ -49,7 +50,10 @@ ROLES = {
 _SI = {"load": "N", "friction": "N", "separation": "m", "pull_off": "N", "mu": ""}
 _UNIT_KEY = {"load": "load", "pull_off": "load", "friction": "friction", "separation": "separation"}
 _SUFFIX = {"_n": "N", "_m": "m"}
-_HEADER = re.compile(r"^\s*(?P<base>[^\[\]]*?)\s*(\[(?P<unit>[^\[\]]*)\])?\s*$")
+#: A header cell: a name and, optionally, its unit in brackets ('load [nN]'), in parentheses
+#: ('load (nN)', as spreadsheets write it) or after a slash ('load / nN', ISO 80000-1).
+_HEADER = re.compile(r"^\s*(?P<base>[^\[\]()/]*?)\s*(?:\[(?P<unit>[^\[\]]*)\]|\((?P<paren>[^()]*)\)"
+                     r"|/\s*(?P<slash>[^\[\]()]*?))?\s*$")
 _NAN_TEXT = {"", "nan", "na", "n/a", "none", "null"}
 
 
@@ -72,7 +76,8 @@ def _classify(header: str):
     """(role, is_err, unit or None, SI-suffix unit or None) of one header cell; role None if unknown."""
     m = _HEADER.match(header)
     base = (m.group("base") if m else header).strip().lower().replace(" ", "_").replace("-", "_")
-    unit = m.group("unit").strip() if m and m.group("unit") is not None else None
+    given = next((m.group(g) for g in ("unit", "paren", "slash") if m.group(g) is not None), None) if m else None
+    unit = given.strip() if given is not None else None
     suffix_unit = None
     for suffix, si in _SUFFIX.items():
         stem = base[: -len(suffix)]
@@ -93,6 +98,16 @@ def _role(base):
         if base in names:
             return role, base == names[0]
     return None, False
+
+
+def _to_si(value: float, factor: float) -> float:
+    """``value`` times ``factor``; a decimal prefix (1e-9 for nN) divides by the exact power of ten,
+    so that 3 nN is 3e-09 as the API's 3e-9 is (3 * 1e-9 is 3.0000000000000004e-09)."""
+    if 0.0 < factor < 1.0:
+        inverse = round(1.0 / factor)
+        if inverse <= 10**22 and float(f"1e-{len(str(inverse)) - 1}") == factor and str(inverse).strip("0") == "1":
+            return value / inverse
+    return value * factor
 
 
 def _factor(unit_text: str, role: str, header: str) -> float:
@@ -180,7 +195,7 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
             dropped += 1
             continue
         for k, v in cells.items():
-            values[k].append(v * factor[k])
+            values[k].append(_to_si(v, factor[k]))
     if not values[used[0]]:
         raise ValueError(f"{name}: every row holds a NaN; nothing left to fit")
     notes = []
