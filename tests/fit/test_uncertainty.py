@@ -274,3 +274,23 @@ def test_the_profile_of_a_parameter_near_zero_reaches_its_level():
     p = res.parameters["P0_N"]
     assert p.method == "profile" and p.ci95[0] is not None and p.ci95[0] < 0
     assert p.ci95[1] == pytest.approx(upper, rel=1e-5)
+
+
+def test_relative_weights_from_the_model_remove_the_bias_of_weighting_by_the_data():
+    """Found by a review: weights 1/|y_i| of the noisy data give the points with negative noise
+    more weight: at 10 % relative noise tau came out 2.5 % low (-0.67 standard errors) and the
+    68 % intervals held it 58 % of the time.  Re-weighting by the model (iteratively) removes
+    that: over 200 noise draws the mean is within 1 % and the coverage near 68 %."""
+    R_, E_, w_, tau = 20e-9, 50e9, 0.2, 1e9
+    P = np.linspace(-15e-9, 100e-9, 40)
+    F = tau * math.pi * _jkr_radius_by_hand(P, R_, E_, w_) ** 2
+    rng = np.random.default_rng(0)
+    values, covered = [], 0
+    for _ in range(200):
+        data = friction_load_data(P, F * (1 + 0.1 * rng.normal(size=P.size)), physical=True)
+        res = fit_friction_load(data, "jkr", fix={"E_star_Pa": E_, "R_m": R_}, ci="wald")
+        p = res.parameters["tau_Pa"]
+        values.append(p.value)
+        covered += abs(p.value - tau) <= p.stderr
+    assert abs(np.mean(values) / tau - 1.0) < 0.01
+    assert 0.6 < covered / 200 < 0.78

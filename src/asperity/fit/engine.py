@@ -15,7 +15,10 @@ the optimiser works in decades.  User expressions (``expr``) are in linear names
   stated uncertainties (the x part, effective variance, Orear 1982, when an x uncertainty
   column is given; :math:`f'\sigma_x` as the secant :math:`[f(x+\sigma_x) - f(x-\sigma_x)]/2`
   at the current parameters, which stays finite next to a pull-off where the tangent does not);
-* ``'relative'``: :math:`s_i = |y_i|`, relative residuals (friction spans decades);
+* ``'relative'``: :math:`s_i = |f(x_i)|`, relative residuals (friction spans decades),
+  iteratively reweighted: a first fit with :math:`s_i = |y_i|`, then re-fits with the
+  model's values at the previous fit until they change by less than 1e-6
+  (:meth:`Problem.reweight`);
 * ``'none'``: uniform, :math:`s_i = \mathrm{rms}(y)` of the data set, so that data sets in
   different units (normal force in newtons, relative friction) weigh alike in a joint fit;
 * ``'auto'`` (default): ``column`` when the data carry uncertainties, else ``relative``
@@ -122,6 +125,7 @@ class Term:
         self._cache: OrderedDict = OrderedDict()
         self._shifts: dict = {}
         self.evaluations = 0
+        self.relative_scale = None  # |model| at the last fit for weights='relative' (Problem.reweight)
 
     def local(self, values: dict) -> dict:
         return {loc: values[glob] for loc, glob in self.names.items()}
@@ -146,7 +150,7 @@ class Term:
             rms = float(np.sqrt(np.mean(d.y**2)))
             return np.full(len(d), rms if rms > 0 else 1.0)
         if weights == "relative":
-            return np.abs(d.y)
+            return np.abs(d.y) if self.relative_scale is None else self.relative_scale
         var = np.zeros(len(d)) if d.y_err is None else d.y_err**2
         if d.x_err is not None:
             var = var + self.x_spread(local) ** 2
@@ -252,6 +256,28 @@ class Problem:
             out.append(r)
         r = np.concatenate(out)
         return np.where(np.isfinite(r), r, PENALTY)
+
+    def reweight(self, lmfit_params) -> float:
+        """Relative weights from the model at ``lmfit_params``: :math:`s_i = |f(x_i)|` (where it is
+        0, :math:`|y_i|`) for every term weighted ``'relative'``; the largest relative change of a
+        weight.  Iterated with a re-fit (iteratively reweighted least squares), this removes the
+        bias of weighting by the data themselves, which gives the points whose noise is negative
+        more weight (a review measured -2.5 % on tau and 58 % coverage of the 68 % intervals at
+        10 % noise)."""
+        values = self.values(lmfit_params)
+        change = 0.0
+        for term, weights in zip(self.terms, self.weights, strict=True):
+            if weights != "relative":
+                continue
+            try:
+                f = np.abs(term.predict(term.local(values))[0])
+            except (ValueError, ZeroDivisionError, OverflowError, FloatingPointError):
+                continue  # the model cannot be evaluated there: the fit's own checks say so
+            new = np.where((f > 0) & np.isfinite(f), f, np.abs(term.data.y))
+            old = term.sigma(term.local(values), "relative")
+            change = max(change, float(np.max(np.abs(new - old) / old)))
+            term.relative_scale = new
+        return change
 
     def lmfit_parameters(self):
         """The :class:`lmfit.Parameters` of the problem (see the module docstring)."""

@@ -101,6 +101,10 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = 
                 restart_note = (f"the fit from the given start stopped at chi-square {first.chisqr:.6g}; a restart "
                                 f"from another start reached {result.chisqr:.6g} (kept): the start matters "
                                 "for these data, give one near the answer if you know it")
+        for _ in range(REWEIGHT_ROUNDS if "relative" in problem.weights and not result.aborted else 0):
+            if problem.reweight(result.params) < 1e-6:
+                break
+            result = minimizer.least_squares(params=result.params, **kws)
         if problem.loss != "linear" and not result.aborted:
             mad = float(np.median(np.abs(result.residual)))
             result = minimizer.least_squares(params=result.params, loss=problem.loss,
@@ -131,6 +135,9 @@ def _unevaluable(problem, term, err, start) -> str:
     return (f"the fit ended where model {term.model.name!r} cannot be evaluated ({err}); give start values "
             "closer to the data or narrower bounds")
 
+
+#: Re-fits with relative weights from the model (:meth:`~asperity.fit.engine.Problem.reweight`).
+REWEIGHT_ROUNDS = 10
 
 #: Restart choices of :func:`run`.
 RESTARTS = ("auto", "always", "never")
