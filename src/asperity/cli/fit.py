@@ -105,7 +105,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                                                       "all); the others get one copy per file, NAME_1, NAME_2, ...")
     f = parser.add_argument_group("fitting")
     f.add_argument("--weights", choices=("auto", "column", "relative", "none"), default="auto",
-                   help="residual weights: column = 1/uncertainty column, relative = 1/|y| (default for "
+                   help="residual weights: column = 1/uncertainty column, relative = 1/|model| (default for "
                         "friction and pull-off data without uncertainties), none; auto picks")
     f.add_argument("--loss", choices=("linear", "soft_l1", "huber"), default="linear",
                    help="loss function (soft_l1, huber: robust to outliers)")
