@@ -133,7 +133,7 @@ def test_tornado_arguments_are_read():
     # the Bokeh server hands the query over as {str: [bytes]}
     state, messages = state_from_query({"alpha": [b"0.01"], "mode": [b"physical"], "sigma_s_m": [b"3nm"],
                                         "n": [b"40", b"50"]})
-    assert messages == []
+    assert messages == ["link: n given 2 times; the last, '50', is used"]
     assert (state["alpha"], state.mode, state["n"]) == (0.01, "physical", 50)
     assert state["sigma_s_m"] == pytest.approx(3e-9, rel=1e-15)
 
@@ -201,3 +201,10 @@ def test_the_pages_own_addresses_carry_no_ignored_values():
         assert not messages
         again, messages = state_from_query(state.to_query())
         assert again == state and not messages
+
+
+def test_a_repeated_parameter_of_a_link_is_named():
+    """Found by a review: '?alpha=0.01&alpha=0.5' showed alpha = 0.5 with no word."""
+    state, messages = state_from_query("alpha=0.01&alpha=0.5")
+    assert state.values["alpha"] == 0.5
+    assert messages == ["link: alpha given 2 times; the last, '0.5', is used"]

@@ -342,7 +342,7 @@ def state_from_query(query) -> tuple[State, list[str]]:
     """The state a query string (or parsed query, key -> list of values) describes, and messages.
 
     Unknown keys and unreadable values are reported (the field keeps its default); a
-    repeated key takes its last value.  Never raises for what a link may contain.
+    repeated key takes its last value, and says so.  Never raises for what a link may contain.
     """
     if isinstance(query, str):
         query = parse_qs(query.lstrip("?"), keep_blank_values=True)
@@ -357,6 +357,8 @@ def state_from_query(query) -> tuple[State, list[str]]:
             continue
         if not texts:
             continue
+        if len(texts) > 1:  # (taken silently before: found by a review)
+            messages.append(f"link: {key} given {len(texts)} times; the last, {texts[-1]!r}, is used")
         try:
             values[key] = parse_value(spec[key], texts[-1])
             given.append(key)
