@@ -143,3 +143,25 @@ def test_a_binary_points_file_is_one_line_naming_it(capsys, tmp_path):
     path.write_bytes(b"\xcd\xff\x00garbage")
     code, _, err = run(capsys, "sweep", "--points", str(path), "--P", "1", "--out", str(tmp_path / "x.nc"))
     assert code == 2 and err.count("\n") == 1 and f"--points {str(path)!r}: cannot read it as text" in err, err
+
+
+def test_a_physical_sweep_over_the_work_of_adhesion_and_a_burgers_vector_equals_the_api(capsys, tmp_path):
+    """Found by a review: diamond (no w in the table) and mica (no b) could not be swept, and the
+    per-set messages advised --w and --b, which the sweep did not have."""
+    pytest.importorskip("pint")
+    out = tmp_path / "dm.nc"
+    code, _, err = run(capsys, "sweep", "--material", "diamond,mica", "--sigma-s", "2nm", "--R", "1um",
+                       "--eta", "1e12/m^2", "--area", "1mm^2", "--w", "0J/m^2,0.1J/m^2", "--b", "0.25nm",
+                       "--load", "1mN,1N", "--out", str(out), "--scheduler", "serial")
+    assert code == 0, err
+    ds = asperity.sweep(material=["diamond", "mica"], sigma_s=2e-9, R=1e-6, eta=1e12, area=1e-6,
+                        w=np.array([0.0, 0.1]), b=2.5e-10, P=np.array([1e-3, 1.0]), scheduler="serial")
+    same(out, ds)
+    from asperity.bodies import contact_material
+    from asperity.physical import PhysicalContact, Surface
+
+    contact = PhysicalContact(contact_material("mica", w=0.1, b=2.5e-10), Surface(2e-9, 1e-6, 1e12, 1e-6))
+    np.testing.assert_array_equal(ds.F_N.sel(material="mica", w=0.1).values, contact.load_curve([1e-3, 1.0]).F)
+    with pytest.warns(asperity.AsperityWarning, match="fewer than one"):  # the set's note, as a warning here
+        assert ds.pull_off_N.sel(material="mica", w=0.1).item() == contact.pull_off().force
+    assert (ds.message.sel(w=0.0).values == "").all()

@@ -26,9 +26,11 @@ Examples:
   asperity sweep --points sets.csv --P 1,10,100 --out map.zarr --scheduler tcp://10.0.0.1:8786
   asperity sweep --material Au,Si --sigma-s 1nm,2nm,4nm --R 1um --eta 1e12/m^2 --area 1mm^2 \\
       --load 1mN:1N:30 --out metals.nc
-A physical sweep takes table materials (no values of one's own), their adhesion and the
-elastic law: the dimensions of a sweep are those of asperity.sweep, whose parameter sets have
-no --w, --E, --law or --hardness (compute such contacts one by one with load/pulloff/cycle).
+A physical sweep takes table materials, with their work of adhesion and Burgers vector or
+--w and --b in their place (--w 0J/m^2: no adhesion; a material without them in the table, such as
+diamond or mica, needs them), and the elastic law: the dimensions of a sweep are those of
+asperity.sweep, whose parameter sets have no --E, --law or --hardness (compute such contacts
+one by one with load/pulloff/cycle).
 Each set's contact is in the file's coordinates; there is no single contact to describe.
 Then: asperity plot map.nc --x alpha --y gamma --z pull_off"""
 
@@ -39,8 +41,9 @@ MODEL_OPTIONS = (("--alpha", "alpha"), ("--beta", "beta"), ("--gamma", "gamma"),
 #: Physical options: (option, parameter name, SI unit); the old spellings --sigma, --radius and
 #: --density are aliases, as for every physical command.
 PHYSICAL_OPTIONS = (("--sigma-s", "sigma_s", "m"), ("--R", "R", "m"), ("--eta", "eta", "1/m^2"),
-                    ("--area", "area", "m^2"))
-ALIASES = {"--sigma-s": ("--sigma",), "--R": ("--radius",), "--eta": ("--density",), "--area": ()}
+                    ("--area", "area", "m^2"), ("--w", "w", "J/m^2"), ("--b", "b", "m"))
+ALIASES = {"--sigma-s": ("--sigma",), "--R": ("--radius",), "--eta": ("--density",), "--area": (), "--w": (),
+           "--b": ()}
 
 
 def _store_path(text: str) -> str:

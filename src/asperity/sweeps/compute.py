@@ -16,6 +16,7 @@ import warnings
 import numpy as np
 
 from .._warnings import AsperityWarning
+from ..bodies import contact_material
 from ..curves import Model
 from ..friction_stress import HurtadoKim
 from ..physical import PhysicalContact
@@ -33,7 +34,8 @@ def compute_set(kind: str, params: dict, axis: str, values: np.ndarray) -> dict:
     ----------
     kind : {'model', 'physical'}
         Dimensionless parameters (alpha, beta, gamma, nu, h_over_b, tau_f1, tau_f2, a1, a2)
-        or a physical contact (material, sigma_s, R, eta, area in SI units).
+        or a physical contact (material, sigma_s, R, eta, area, and optionally w and b, in SI
+        units).
     params : dict
         The set's parameters.
     axis : {'P', 'd', 'P_N', 'd_m'}
@@ -54,7 +56,10 @@ def compute_set(kind: str, params: dict, axis: str, values: np.ndarray) -> dict:
     """
     if kind == "physical":
         p = params
-        contact = PhysicalContact(p["material"], Surface(p["sigma_s"], p["R"], p["eta"], p["area"]))
+        body = p["material"]
+        if p.get("w") is not None or p.get("b") is not None:  # the material's, replaced
+            body = contact_material(body, w=p.get("w"), b=p.get("b"))
+        contact = PhysicalContact(body, Surface(p["sigma_s"], p["R"], p["eta"], p["area"]))
         curve = contact.load_curve(values) if axis == "P_N" else contact.separation_curve(values)
         po = contact.pull_off()
         out = curve.columns()  # SI names: d_m, P_N, F_N, mu, area_m2, pressure_Pa, contacts

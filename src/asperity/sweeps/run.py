@@ -169,7 +169,8 @@ def _progress(total, enabled):
 
 
 def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=None, tau_f2=None, a1=None,
-          a2=None, material=None, sigma_s=None, R=None, eta=None, area=None, points=None, P=None, d=None,
+          a2=None, material=None, sigma_s=None, R=None, eta=None, area=None, w=None, b=None, points=None, P=None,
+          d=None,
           out=None, scheduler=None, resume=False, chunk_sets=None, retries=3, progress=False):
     r"""Curves and pull-off over a grid (or a list) of parameter sets, as an :class:`xarray.Dataset`.
 
@@ -195,6 +196,11 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
         with ``sigma_s`` (m), ``R`` (m), ``eta`` (1/m^2) and ``area`` (m^2).
     sigma_s, R, eta, area : float or 1-D array_like, optional
         Surface of a physical sweep (SI units), > 0.
+    w, b : float or 1-D array_like, optional
+        Work of adhesion (J/m^2, >= 0; 0: no adhesion) and Burgers vector (m, > 0) of a
+        physical sweep, replacing the material's
+        (:func:`asperity.bodies.contact_material`): a material without them in the table
+        (diamond has no w, mica no b) can be swept with them.
     points : dict of 1-D arrays or str, optional
         A list of parameter sets: columns of equal length, or the path of a CSV file with a
         header of parameter names.
@@ -255,7 +261,8 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
     if isinstance(retries, bool) or not isinstance(retries, int) or retries < 0:
         raise ValueError(f"retries must be an integer >= 0, got {retries!r}")
     parameters = dict(alpha=alpha, beta=beta, gamma=gamma, nu=nu, h_over_b=h_over_b, tau_f1=tau_f1,
-                      tau_f2=tau_f2, a1=a1, a2=a2, material=material, sigma_s=sigma_s, R=R, eta=eta, area=area)
+                      tau_f2=tau_f2, a1=a1, a2=a2, material=material, sigma_s=sigma_s, R=R, eta=eta, area=area,
+                      w=w, b=b)
     if out is not None:
         text = os.fspath(out) if isinstance(out, os.PathLike) else out
         if isinstance(text, str) and text.rstrip("/").endswith(".zarr"):

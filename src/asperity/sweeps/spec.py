@@ -43,7 +43,7 @@ __all__ = ["MODEL_NAMES", "PHYSICAL_NAMES", "CHUNK_SETS", "SweepSpec", "default_
 #: Parameters of a dimensionless sweep, in dimension order.
 MODEL_NAMES = ("alpha", "beta", "gamma", "nu", "h_over_b", "tau_f1", "tau_f2", "a1", "a2")
 #: Parameters of a physical sweep, in dimension order (material is a name).
-PHYSICAL_NAMES = ("material", "sigma_s", "R", "eta", "area")
+PHYSICAL_NAMES = ("material", "sigma_s", "R", "eta", "area", "w", "b")
 #: Most sets per chunk: ~0.5 s of work per task keeps the scheduler's share (ms per task) small.
 CHUNK_SETS = 256
 #: Loads (or separations) per curve at most, as on the command line.
