@@ -22,7 +22,7 @@ DESCRIPTION = ("Curves at given loads (or separations) and the pull-off force fo
                "Needs the sweep extra: pip install 'asperity[sweep]'.")
 EPILOG = """Lists: 'a,b,c' or 'start:stop:count' (log-spaced where the quantity spans decades).
 Examples:
-  asperity sweep --alpha 1e-3:0.1:20 --beta 1000 --gamma 1e-5:1e-2:20 --P 1e-2:1e5:100 --out map.nc
+  asperity sweep --alpha 1e-3:0.1:20 --beta 1000 --gamma 1e-5:1e-2:20 --P 1e-2:1e5:8 --out map.nc
   asperity sweep --points sets.csv --P 1,10,100 --out map.zarr --scheduler tcp://10.0.0.1:8786
   asperity sweep --material Au,Si --sigma-s 1nm,2nm,4nm --R 1um --eta 1e12/m^2 --area 1mm^2 \\
       --load 1mN:1N:30 --out metals.nc
