@@ -21,7 +21,9 @@ Command modules import NumPy, SciPy and the model inside ``run``, after parsing,
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
+import threading
 import warnings
 
 from .._optional import MissingDependency
@@ -80,15 +82,36 @@ def run_with_notes(run, args) -> None:
         print(f"asperity: note: {note}", file=sys.stderr)
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised in the main thread so that it unwinds as Ctrl-C does (files closed, a
+    sweep's cluster shut down, its partial store left to resume)."""
+
+
+def _terminate(signum, frame):
+    raise Terminated
+
+
 def main(argv=None) -> int:
     """Run the command line on ``argv`` (default ``sys.argv[1:]``); return the exit status.
 
     Errors print one line ``asperity: error: ...`` and return 2.  asperity's warnings (e.g.
     :class:`asperity.AreaFractionWarning`) print one ``asperity: note: ...`` line each after
-    a successful command, and none after an error.
+    a successful command, and none after an error.  Ctrl-C (status 130) and SIGTERM (143)
+    print ``asperity: interrupted`` (a review found SIGTERM ending a sweep on a local cluster
+    with Python's "leaked semaphore" warning and no line of ours).
     """
     parser = build_parser()
     argv = sys.argv[1:] if argv is None else argv
+    in_main = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGTERM, _terminate) if in_main else None  # (None: set outside Python)
+    try:
+        return _main(parser, argv)
+    finally:
+        if in_main and previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+
+
+def _main(parser, argv) -> int:
     try:
         args = parser.parse_args(join_negative_lists(argv))
         if args.command is None:
@@ -98,8 +121,9 @@ def main(argv=None) -> int:
     except (UsageError, ValueError, TypeError, MissingDependency) as exc:  # the library's own checks
         print(f"asperity: error: {' '.join(str(exc).split())}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("asperity: interrupted", file=sys.stderr)
-        return 130
+    except KeyboardInterrupt as exc:
+        terminated = isinstance(exc, Terminated)
+        print(f"asperity: interrupted{' (SIGTERM)' if terminated else ''}", file=sys.stderr)
+        return 143 if terminated else 130
     return 0
 
