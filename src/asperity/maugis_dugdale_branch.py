@@ -106,6 +106,13 @@ def for_each_lambda(solve, lam, *arrays, outputs: int = 1):
     ----------
     Maugis (1992): the curve depends on :math:`\lambda` alone in these units.
     """
+    if np.ndim(lam) == 0 and all(np.ndim(a) <= 1 for a in arrays) and len(arrays) <= 1:  # one lambda: as it is
+        result = solve(float(lam), *arrays)
+        parts = result if outputs > 1 else (result,)
+        shape = np.shape(arrays[0]) if arrays else ()
+        out = tuple(np.asarray(r, dtype=float) if np.shape(r) == shape else
+                    np.broadcast_to(np.asarray(r, dtype=float), shape).copy() for r in parts)
+        return out if outputs > 1 else out[0]
     lam, *arrays = np.broadcast_arrays(lam, *arrays)
     values = np.unique(lam)
 
@@ -286,6 +293,9 @@ def md_branch_end(lam) -> BranchPoint:
     ----------
     Maugis (1992); Johnson & Greenwood (1997); Adams et al., Eqs (11)-(13), (18).
     """
+    lo, hi = LAMBDA_RANGE
+    if type(lam) is float and lo <= lam <= hi:  # the integrals' path: one checked float
+        return _branch_end(lam)
     return _branch_points(_branch_end, lam)
 
 
