@@ -150,3 +150,25 @@ def test_units_in_brackets_parentheses_or_after_a_slash(tmp_path, header):
     np.testing.assert_array_equal(d.x, [1e-9, 3e-9])
     np.testing.assert_array_equal(d.y, [2e-9, 4e-9])
     np.testing.assert_array_equal(d.y_err, [1e-10, 1e-10])
+
+
+@pytest.mark.parametrize("header, row, read_as", [
+    ("P,F,F/P", "1,0.5,0.5", "friction"),                       # a ratio column, not F in units of P
+    ("load (nN),friction (nN),friction/load", "1,0.5,0.5", "friction"),
+    ("P_N,F_N,mu (-)", "1e-9,5e-10,0.5", "friction"),
+    ("load [nN],friction [nN],friction (a.u.)", "1,0.5,7", "friction"),
+])
+def test_a_name_with_a_slash_or_parentheses_that_is_no_unit_is_ignored_as_before(tmp_path, header, row, read_as):
+    """Found by the review of the fix above: 'F/P' became F in units of P (ambiguous with F),
+    'friction (a.u.)' a pint error; only a unit of the column's dimension is read as one."""
+    path = tmp_path / "d.csv"
+    path.write_text(header + "\n" + row + "\n" + row + "\n")
+    d = read_data(str(path))
+    assert d.kind == read_as and any("ignored column" in n for n in d.notes)
+
+
+def test_decimal_prefixes_in_files_read_as_on_the_command_line(tmp_path):
+    path = tmp_path / "d.csv"
+    path.write_text("load / nN,friction [uN]\n3.3,3.3\n4.76,1.6\n")
+    d = read_data(str(path))
+    assert d.x.tolist() == [3.3e-9, 4.76e-9] and d.y.tolist() == [3.3e-6, 1.6e-6]

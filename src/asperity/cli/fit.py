@@ -117,7 +117,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         "each model of --compare has its own); a profile not finished keeps its Wald interval, "
                         "with a warning")
     f.add_argument("--restarts", choices=("auto", "always", "never"), default="auto",
-                   help="repeat the fit from starts a decade away when it looks stuck in a local minimum "
+                   help="repeat the fit from other starts (each free parameter moved both ways) when it looks stuck in a "
+                        "local minimum "
                         "(auto: points out of the model's reach, not converged, or an improbable chi-square), "
                         "for every fit (always), or never")
     d = parser.add_argument_group("data")
@@ -129,6 +130,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     d.add_argument("--drop-nan", action="store_true", help="drop rows holding NaN (empty cells), and count them")
     add_contact_arguments(parser, json_shape='the fit\'s object with a "contact" key ({"contact": {...}, '
                                              '"results": [...]} with --compare)')
+    for action in parser._actions:  # the shared help speaks of the dimensionless model's default: not a fit's
+        if "--nu" in action.option_strings:
+            action.help = ("Poisson's ratio of the (first) body: with --E, a body of your own; with --material, "
+                           "replacing the table's.  The dimensionless gw fit holds its nu with --fix nu=...")
     o = parser.add_argument_group("output")
     o.add_argument("--format", choices=("table", "json"), default="table", help="output format (default table)")
     o.add_argument("-o", "--output", metavar="FILE", type=output_file, help="write to FILE instead of standard "

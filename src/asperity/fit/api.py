@@ -88,7 +88,8 @@ def fit_friction_load(data, model="gw", *, vary=None, fix=None, start=None, boun
     grid : int
         Points of the fitted curve.
     restarts : {'auto', 'always', 'never'}
-        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        Repeat a fit that looks stuck in a local minimum from other starts (each free
+        parameter moved both ways: a decade, or within its bounds)
         (:func:`asperity.fit.runner.run`).
     profile_budget : float
         Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
@@ -164,7 +165,8 @@ def fit_force_separation(data, model="gw", *, vary=None, fix=None, start=None, b
     grid : int
         Points of the fitted curve.
     restarts : {'auto', 'always', 'never'}
-        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        Repeat a fit that looks stuck in a local minimum from other starts (each free
+        parameter moved both ways: a decade, or within its bounds)
         (:func:`asperity.fit.runner.run`).
     profile_budget : float
         Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no
@@ -235,7 +237,8 @@ def fit_pull_off(data, model="gw", *, vary=None, fix=None, start=None, bounds=No
     drop_nan : bool
         Drop rows holding NaN when reading a file.
     restarts : {'auto', 'always', 'never'}
-        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        Repeat a fit that looks stuck in a local minimum from other starts (each free
+        parameter moved both ways: a decade, or within its bounds)
         (:func:`asperity.fit.runner.run`).
     profile_budget : float
         Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no

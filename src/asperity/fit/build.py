@@ -111,6 +111,9 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
             p.expr = str(expr[name])
         if name in bounds:
             p.lo, p.hi = _bounds(bounds[name], name)
+            if not p.spec.log and any(math.isfinite(b) and abs(b) > MAX_MAGNITUDE for b in (p.lo, p.hi)):
+                raise ValueError(f"bounds {name}: a finite bound must lie within +-{MAX_MAGNITUDE:g} (None or inf: "
+                                 f"open), got ({p.lo!r}, {p.hi!r})")  # (a log-scaled one is fitted in log10)
         if p.value is not None and not p.spec.valid(p.value):  # before the models' starts use it
             how = "fix" if name in fix else "start" if name in start else "default"
             raise ValueError(f"{how} {name} = {p.value:g} is outside its valid range ({p.spec.meaning}; "
@@ -159,9 +162,6 @@ def _bounds(value, name):
     hi = math.inf if hi is None else float(hi)
     if not lo < hi or math.isnan(lo) or math.isnan(hi):
         raise ValueError(f"bounds {name}: need lo < hi, got ({lo!r}, {hi!r})")
-    if any(math.isfinite(b) and abs(b) > MAX_MAGNITUDE for b in (lo, hi)):
-        raise ValueError(f"bounds {name}: a finite bound must lie within +-{MAX_MAGNITUDE:g} (None or inf: open), "
-                         f"got ({lo!r}, {hi!r})")
     return lo, hi
 
 

@@ -62,7 +62,8 @@ def compare_models(data, models=("jkr", "dmt", "md", "cos", "amontons"), *, kind
     grid : int
         Points of each fitted curve.
     restarts : {'auto', 'always', 'never'}
-        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        Repeat a fit that looks stuck in a local minimum from other starts (each free
+        parameter moved both ways: a decade, or within its bounds)
         (:func:`asperity.fit.runner.run`).
     profile_budget : float
         Seconds the profile likelihoods of each model's fit may take in all (default 60;

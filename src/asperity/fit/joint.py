@@ -55,7 +55,8 @@ def fit_joint(datasets, models="gw", *, shared=None, vary=None, fix=None, start=
     grid : int
         Points of each fitted curve.
     restarts : {'auto', 'always', 'never'}
-        Repeat a fit that looks stuck in a local minimum from starts a decade away
+        Repeat a fit that looks stuck in a local minimum from other starts (each free
+        parameter moved both ways: a decade, or within its bounds)
         (:func:`asperity.fit.runner.run`).
     profile_budget : float
         Seconds the profile likelihoods may take in all (default 60; ``math.inf``: no

@@ -30,6 +30,7 @@ import csv
 import math
 import os
 import re
+from decimal import Decimal
 
 import numpy as np
 
@@ -78,6 +79,10 @@ def _classify(header: str):
     base = (m.group("base") if m else header).strip().lower().replace(" ", "_").replace("-", "_")
     given = next((m.group(g) for g in ("unit", "paren", "slash") if m.group(g) is not None), None) if m else None
     unit = given.strip() if given is not None else None
+    if m and given is not None and m.group("unit") is None and not _is_unit_of(base, unit):
+        # 'F/P', 'friction/load', 'mu (-)', 'friction (a.u.)': a name, not a name and its unit
+        # (read as units they made files that were read before ambiguous: found by a review)
+        base, unit = header.strip().lower().replace(" ", "_").replace("-", "_"), None
     suffix_unit = None
     for suffix, si in _SUFFIX.items():
         stem = base[: -len(suffix)]
@@ -93,6 +98,18 @@ def _classify(header: str):
     return role, is_err, unit, suffix_unit, symbol, base
 
 
+def _is_unit_of(base: str, unit: str) -> bool:
+    """Whether ``unit`` (from 'name (unit)' or 'name / unit') is a unit of the physical column
+    ``base`` names; only physical names (load, friction, separation, pull_off, ...) take one."""
+    role, symbol = _role(base.removesuffix("_err").removesuffix("_error").removesuffix("_sigma"))
+    if role is None or symbol or not _SI[role]:
+        return False
+    try:
+        return parse_quantity(f"1 {unit}", _SI[role], "unit") > 0
+    except ValueError:
+        return False
+
+
 def _role(base):
     for role, names in ROLES.items():
         if base in names:
@@ -101,12 +118,13 @@ def _role(base):
 
 
 def _to_si(value: float, factor: float) -> float:
-    """``value`` times ``factor``; a decimal prefix (1e-9 for nN) divides by the exact power of ten,
-    so that 3 nN is 3e-09 as the API's 3e-9 is (3 * 1e-9 is 3.0000000000000004e-09)."""
-    if 0.0 < factor < 1.0:
-        inverse = round(1.0 / factor)
-        if inverse <= 10**22 and float(f"1e-{len(str(inverse)) - 1}") == factor and str(inverse).strip("0") == "1":
-            return value / inverse
+    """``value`` times ``factor``; for a decimal prefix (``factor`` a power of ten: 1e-9 for nN)
+    the decimal digits of the value get its exponent, so that 3.3 nN is 3.3e-09 as the API's
+    3.3e-9 and the command line's '3.3nN' are (3.3 * 1e-9 is one ulp off: found by a review)."""
+    if factor > 0 and math.isfinite(value):
+        k = round(math.log10(factor))
+        if abs(k) <= 22 and factor == float(f"1e{k}"):
+            return float(Decimal(repr(value)).scaleb(k))
     return value * factor
 
 

@@ -315,7 +315,9 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
     if want_profile:
         for i, v in enumerate(var_names):
             result.params[v].stderr = float(se[i]) if np.isfinite(se[i]) and se[i] > 0 else None
-        profiles = profile_intervals(minimizer, result, want_profile, absolute=absolute, bounds=bounds, budget=budget)
+        held = [v for v, n in zip(var_names, names, strict=True) if n in undetermined]  # conditional on them
+        profiles = profile_intervals(minimizer, result, want_profile, absolute=absolute, bounds=bounds, budget=budget,
+                                     hold=held)
         for v, (lo, hi, why_lo, why_hi) in profiles.items():
             p = by_fitted[v]
             n = p.name
@@ -335,7 +337,9 @@ def _analyse(problem, minimizer, result, absolute, ci, budget=PROFILE_BUDGET):
             methods[n] = "profile"
             for end, why, side in ((lo, why_lo, "lower"), (hi, why_hi, "upper")):
                 if end is None:
-                    reason = ("the profile stays below the 95 % level up to the bound" if why == "bound"
+                    edge = p.lo if side == "lower" else p.hi  # a bound of the user's or the quantity's, not
+                    real = math.isfinite(edge) and not (p.log and edge <= 0)  # log10's internal +-300 decades
+                    reason = ("the profile stays below the 95 % level up to the bound" if why == "bound" and real
                               else "the profile is flat")
                     warnings.append(f"{n}: no {side} 95 % limit ({reason}): the data do not bound it on that side")
                     notes[n] = (notes.get(n, "") + f"; no {side} limit").lstrip("; ")

@@ -261,7 +261,8 @@ class _OverBudget(Exception):
     """Raised inside a profile's objective when the profile budget is spent."""
 
 
-def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict, budget: float = PROFILE_BUDGET):
+def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict, budget: float = PROFILE_BUDGET,
+                      hold=()):
     """95 % profile-likelihood intervals of ``names`` (fitted coordinates), the others re-fitted.
 
     Parameters
@@ -278,6 +279,11 @@ def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict,
         Fitted name -> (lo, hi) bounds, to tell a flat profile at a bound.
     budget : float
         Seconds the profiles may take in all (``math.inf``: no limit).
+    hold : sequence of str
+        Fitted names held at their best values in every re-fit (the parameters the data do
+        not determine: the profiles are conditional on them, as the pseudo-inverse standard
+        errors are; re-fitting them walked along the flat direction at three to four times
+        the cost, found by a review).
 
     Returns
     -------
@@ -297,17 +303,17 @@ def profile_intervals(minimizer, result, names, *, absolute: bool, bounds: dict,
 
     minimizer.userfcn = guarded
     try:
-        return _profiles(minimizer, result, names, absolute, bounds)
+        return _profiles(minimizer, result, names, absolute, bounds, tuple(hold))
     finally:
         minimizer.userfcn = objective
 
 
-def _profiles(minimizer, result, names, absolute, bounds):
+def _profiles(minimizer, result, names, absolute, bounds, hold=()):
     """The profiles of :func:`profile_intervals` (the objective raises _OverBudget when the time is up)."""
     out = {}
     for name in names:
         try:
-            out[name] = _profile(minimizer, result, name, absolute, bounds)
+            out[name] = _profile(minimizer, result, name, absolute, bounds, hold)
         except _OverBudget:
             out[name] = (None, None, "budget", "budget")
         except ValueError as err:  # a root search that could not bracket (a noisy or stepped chi-square)
@@ -315,7 +321,7 @@ def _profiles(minimizer, result, names, absolute, bounds):
     return out
 
 
-def _profile(minimizer, result, name, absolute, bounds):
+def _profile(minimizer, result, name, absolute, bounds, hold=()):
     """The profile of one parameter, root-found on each side of the best fit.
 
     The parameter is held at trial values stepping outward from the best fit, first by its
@@ -332,12 +338,14 @@ def _profile(minimizer, result, name, absolute, bounds):
     par = result.params[name]
     best, se = par.value, par.stderr if par.stderr and np.isfinite(par.stderr) else max(abs(par.value) * 0.2, 0.1)
     nfree = max(result.nfree, 1)
-    others = [n for n, p in result.params.items() if p.vary and n != name]
+    others = [n for n, p in result.params.items() if p.vary and n != name and n not in hold]
     state = {}
 
     def chisqr(x):
         params = state.get("params", result.params).copy()
         params[name].set(value=x, vary=False)
+        for held in hold:
+            params[held].set(vary=False)
         if not others:
             r = minimizer.userfcn(params, *minimizer.userargs, **minimizer.userkws)
             return float(np.sum(np.square(r)))

@@ -211,7 +211,8 @@ def reproduce(out_dir, progress: Callable[[str], object] | None = None) -> dict:
     Parameters
     ----------
     out_dir : str or path
-        Output directory (created if missing; existing files of the same names are replaced).
+        Output directory (created if missing, inside an existing one; existing files of the
+        same names are replaced).
         Every file is written atomically (to a temporary file, then renamed), so an
         interrupted run leaves complete files only, never a truncated one.
     progress : callable, optional

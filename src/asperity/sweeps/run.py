@@ -168,6 +168,10 @@ def _progress(total, enabled):
     return tqdm(total=total, unit="set", desc="asperity sweep", file=sys.stderr, smoothing=0.1)
 
 
+#: Names of a NetCDF output (case-insensitive); a Zarr store's ends in ``.zarr``.
+NETCDF_SUFFIXES = (".nc", ".nc4", ".netcdf", ".cdf")
+
+
 def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=None, tau_f2=None, a1=None,
           a2=None, material=None, sigma_s=None, R=None, eta=None, area=None, w=None, b=None, points=None, P=None,
           d=None,
@@ -268,8 +272,10 @@ def sweep(*, alpha=None, beta=None, gamma=None, nu=None, h_over_b=None, tau_f1=N
         if isinstance(text, str) and text.rstrip("/").endswith(".zarr"):
             out = text.rstrip("/")  # 'map.zarr/' is the directory map.zarr (its partial beside it)
         out = check_output_path(out, "out", directory=str(out).endswith(".zarr"))
-        if not str(out).endswith((".nc", ".zarr")):  # any other name was silently NetCDF (a review)
-            raise ValueError(f"out must end in .nc (a NetCDF file) or .zarr (a Zarr directory), got {str(out)!r}; "
+        if not (str(out).lower().endswith(NETCDF_SUFFIXES) or str(out).endswith(".zarr")):  # (any other name
+            # was silently NetCDF: a review)
+            raise ValueError(f"out must end in .nc, .nc4, .netcdf or .cdf (a NetCDF file) or .zarr (a Zarr "
+                             f"directory), got {str(out)!r}; "
                              "a table of the results: xarray's Dataset.to_dataframe() on the result")
     spec = make_spec(parameters, points=points, P=P, d=d, chunk_sets=chunk_sets)
     if not (scheduler is None or isinstance(scheduler, str) or hasattr(scheduler, "submit")):
