@@ -22,7 +22,8 @@ which ends the stable branch; below it the branch runs to :math:`A \to 0` with a
 finite tensile load.  The branch end, :math:`\lambda_c`, the stable-branch solution
 :func:`md_solve` (in :mod:`asperity.maugis_dugdale_solve`) and the pull-off loads live in
 :mod:`asperity.maugis_dugdale_branch` and are re-exported here; the numerical kernels (the
-brackets of Eqs 11-12, their series near :math:`t = 0`, Eq 11 solved for :math:`t`) in :mod:`asperity._maugis_dugdale_brackets`.
+brackets of Eqs 11-12, their series near :math:`t = 0`, Eq 11 solved for :math:`t`) in
+:mod:`asperity._maugis_dugdale_brackets`.
 
 All functions broadcast over ``t`` and ``lam`` like ufuncs, except where noted.  Inputs
 that would overflow double precision are refused: contact radii up to :data:`A_MAX`

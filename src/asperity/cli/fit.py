@@ -117,8 +117,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         "each model of --compare has its own); a profile not finished keeps its Wald interval, "
                         "with a warning")
     f.add_argument("--restarts", choices=("auto", "always", "never"), default="auto",
-                   help="repeat the fit from other starts (each free parameter moved both ways) when it looks stuck in a "
-                        "local minimum "
+                   help="repeat the fit from other starts (each free parameter moved both ways) when it looks "
+                        "stuck in a local minimum "
                         "(auto: points out of the model's reach, not converged, or an improbable chi-square), "
                         "for every fit (always), or never")
     d = parser.add_argument_group("data")
