@@ -347,7 +347,7 @@ SKIP = {
                     "asperity.validation.models.run_slope_law", "asperity.validation.notes.comparison_notes",
                     "asperity.validation.notes.model_warning_notes")},
     **{name: "a step of the fitting engine's restarts, called by fit_problem on its own results"
-       for name in ("asperity.fit.runner.suspicious", "asperity.fit.runner.restart_points")},
+       for name in ("asperity.fit.restarts.suspicious", "asperity.fit.restarts.restart_points")},
     "asperity.fit.build.parameter_names": "checks vary/shared for the fitting engine (its callers are fuzzed)",
     "asperity.fit.engine.resolve_weights": "resolves the weights option (the fits are fuzzed)",
     "asperity.validation.progress.progress_bar": "writes a progress report; its loads come from bem_contact",

@@ -12,7 +12,7 @@ pytestmark = pytest.mark.filterwarnings("ignore::asperity.PlasticityWarning")
 
 import asperity  # noqa: E402
 from asperity.fit import fit_friction_load, friction_load_data  # noqa: E402
-from asperity.fit.runner import RESTART_DECADES, restart_points  # noqa: E402
+from asperity.fit.restarts import RESTART_DECADES, restart_points  # noqa: E402
 from asperity.materials import material  # noqa: E402
 from asperity.physical import PhysicalContact, Surface  # noqa: E402
 

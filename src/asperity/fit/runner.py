@@ -20,6 +20,7 @@ from .._validation import check_integer, check_scalar_positive
 from .._warnings import AsperityWarning
 from .build import build_problem
 from .engine import LOSSES, WEIGHTS, Problem
+from .restarts import RESTARTS, restart_points, suspicious
 from .result import FitResult, ParameterEstimate
 from .uncertainty import (
     PROFILE_BUDGET,
@@ -32,7 +33,7 @@ from .uncertainty import (
     wald_reliable,
 )
 
-__all__ = ["CI_METHODS", "RESTARTS", "run", "fit_problem", "grid_for", "suspicious", "restart_points"]
+__all__ = ["CI_METHODS", "RESTARTS", "run", "fit_problem", "grid_for", "suspicious", "restart_points"]  # (re-exported)
 
 #: Interval methods.
 CI_METHODS = ("auto", "wald", "profile")
@@ -138,71 +139,6 @@ def _unevaluable(problem, term, err, start) -> str:
 
 #: Re-fits with relative weights from the model (:meth:`~asperity.fit.engine.Problem.reweight`).
 REWEIGHT_ROUNDS = 10
-
-#: Restart choices of :func:`run`.
-RESTARTS = ("auto", "always", "never")
-#: A restart moves one log-scaled parameter by this many decades (both ways).
-RESTART_DECADES = 1.0
-
-
-def suspicious(problem, result, absolute) -> bool:
-    """True if a finished local fit looks like a local minimum worth restarting from elsewhere.
-
-    A fit is suspicious if it did not converge, if a term has data points the model cannot
-    reach at the fitted parameters (clamped: loads below its pull-off, separations past its
-    branch), or, with stated uncertainties (``absolute``), if the chi-square is improbable
-    (p < 1e-3).  Without uncertainties the quality cannot be judged and only the first two
-    apply.
-    """
-    if result.aborted or not result.success or not math.isfinite(result.chisqr):
-        return True
-    values = problem.values(result.params)
-    for term in problem.terms:
-        try:
-            if term.predict(term.local(values))[1]:
-                return True
-        except ValueError:
-            return True
-    return bool(absolute and result.nfree > 0 and stats.chi2.sf(result.chisqr, result.nfree) < 1e-3)
-
-
-def restart_points(params):
-    """The starts of a restart: each free parameter moved away from its start in turn, both ways.
-
-    A log-scaled parameter moves by +-:data:`RESTART_DECADES`; a linear one between two finite
-    bounds to a tenth of the way in from each bound (an exponent in [0, 1]: 0.1 and 0.9); a
-    linear one with an open side by half its value either way (1.5 and 0.5 times it; one at
-    0 is left).  A review found a COS fit stopped in a local minimum (alpha_t 0.3 for data
-    of 0) that moving only the log-scaled parameters could not leave.
-
-    Parameters
-    ----------
-    params : lmfit.Parameters
-        The original start (log-scaled parameters fitted as ``log10_<name>``).
-
-    Returns
-    -------
-    list of lmfit.Parameters
-        Up to ``2 n`` copies for ``n`` free parameters (moves outside a bound, or to the
-        start itself, are left out).
-    """
-    out = []
-    for name, p in params.items():
-        if not (p.vary and p.expr is None):
-            continue
-        if name.startswith("log10_"):
-            moves = (p.value + RESTART_DECADES, p.value - RESTART_DECADES)
-        elif math.isfinite(p.min) and math.isfinite(p.max):
-            moves = (p.min + 0.1 * (p.max - p.min), p.max - 0.1 * (p.max - p.min))
-        else:
-            moves = (1.5 * p.value, 0.5 * p.value) if p.value != 0 else ()
-        for value in moves:
-            if p.min <= value <= p.max and value != p.value:
-                trial = params.copy()
-                trial[name].value = value
-                out.append(trial)
-    return out
-
 
 def fit_problem(datasets, models, *, shared=None, vary=None, fix=None, start=None, bounds=None, expr=None,
                 weights="auto", loss="linear", ci="auto", grid=200, restarts="auto",
