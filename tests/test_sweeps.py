@@ -421,8 +421,9 @@ def test_a_grid_given_out_of_order_is_stored_in_increasing_order(tmp_path):
 
 
 @pytest.mark.parametrize("kwargs, match", [
-    ({"out": "map.csv"}, r"out must end in .nc \(a NetCDF file\) or .zarr"),
+    ({"out": "map.csv"}, r"out must end in .nc, .nc4, .netcdf or .cdf \(a NetCDF file\) or .zarr"),
     ({"out": "map"}, r"out must end in .nc"),
+    ({"out": "map.ZARR"}, r"out must end in .nc"),
 ])
 def test_an_output_that_is_neither_netcdf_nor_zarr_is_refused(tmp_path, kwargs, match):
     with pytest.raises(ValueError, match=match):
@@ -444,3 +445,13 @@ def test_a_zarr_result_opens_without_warnings(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert xr.open_zarr(tmp_path / "m.zarr").mu.shape == (2, 1)
+
+
+@pytest.mark.parametrize("name", ["m.nc4", "m.NC", "m.netcdf"])
+def test_netcdf_outputs_of_other_spellings_are_written(tmp_path, name):
+    """The review of the suffix check: .nc4, .netcdf and upper case were NetCDF before it."""
+    xr = pytest.importorskip("xarray")
+    pytest.importorskip("netCDF4")
+    asperity.sweep(alpha=[0.01, 0.02], beta=1000.0, P=[1.0], scheduler="serial", out=str(tmp_path / name))
+    with xr.open_dataset(tmp_path / name) as ds:
+        assert ds.mu.shape == (2, 1)
