@@ -307,6 +307,11 @@ SKIP = {
     "asperity.maugis_dugdale_branch.for_each_lambda": "applies a solver it is given (a callable) per distinct lambda; "
                                                       "md_solve, md_solve_load, md_pull_off and md_branch_end, "
                                                       "which call it, are fuzzed",
+    **{name: "a step of read_data (fuzzed, and tested with header cells of every form in tests/fit/test_read.py), "
+             "called with the header cells and units it read"
+       for name in ("asperity.fit.headers.classify_header", "asperity.fit.headers.condition_names",
+                    "asperity.fit.headers.header_role", "asperity.fit.headers.unit_factor",
+                    "asperity.fit.headers.to_si_exact")},
     "asperity.fit.base.parameter_spec": "builds a fit model's parameter table from the registry (get_model)",
     "asperity.fit.runner.grid_for": "the fitting engine's evaluation grid, from a Dataset it validated",
     "asperity.sweeps.spec.make_spec": "called by sweep() (fuzzed) with the arguments it checked",

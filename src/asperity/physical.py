@@ -412,5 +412,5 @@ def _adhesion_w(body: Material, adhesion: bool) -> float:
     if body.w is None:
         raise ValueError(f"material {body.name!r} has no work of adhesion w (J/m^2): give it one "
                          "(dataclasses.replace(material, w=...)) or pass adhesion=False for the Hertz model "
-                         "(command line: --w or --no-adhesion)")
+                         "(command line: --w or --no-adhesion; asperity sweep: --w, 0J/m^2 for none)")
     return body.w

@@ -294,3 +294,19 @@ def test_relative_weights_from_the_model_remove_the_bias_of_weighting_by_the_dat
         covered += abs(p.value - tau) <= p.stderr
     assert abs(np.mean(values) / tau - 1.0) < 0.01
     assert 0.6 < covered / 200 < 0.78
+
+
+def test_relative_weights_that_do_not_settle_are_said_to(monkeypatch):
+    """The second review: the re-weighting stopped after its last round without a word."""
+    from asperity.fit import runner
+
+    monkeypatch.setattr(runner, "REWEIGHT_ROUNDS", 1)
+    R_, E_, w_, tau = 20e-9, 50e9, 0.2, 1e9
+    P = np.linspace(-15e-9, 100e-9, 40)
+    F = tau * math.pi * _jkr_radius_by_hand(P, R_, E_, w_) ** 2
+    data = friction_load_data(P, F * (1 + 0.1 * np.random.default_rng(1).normal(size=P.size)), physical=True)
+    res = fit_friction_load(data, "jkr", fix={"E_star_Pa": E_, "R_m": R_}, ci="wald")
+    assert any(w.startswith("the relative weights did not settle in 1 re-fits") for w in res.warnings)
+    monkeypatch.setattr(runner, "REWEIGHT_ROUNDS", 10)
+    res = fit_friction_load(data, "jkr", fix={"E_star_Pa": E_, "R_m": R_}, ci="wald")
+    assert not any("did not settle" in w for w in res.warnings)

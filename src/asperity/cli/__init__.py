@@ -102,7 +102,9 @@ def main(argv=None) -> int:
     """
     parser = build_parser()
     argv = sys.argv[1:] if argv is None else argv
-    in_main = threading.current_thread() is threading.main_thread()
+    # (not where SIGTERM is ignored by the parent, as Python keeps an ignored SIGINT)
+    in_main = threading.current_thread() is threading.main_thread() and \
+        signal.getsignal(signal.SIGTERM) is not signal.SIG_IGN
     previous = signal.signal(signal.SIGTERM, _terminate) if in_main else None  # (None: set outside Python)
     try:
         return _main(parser, argv)

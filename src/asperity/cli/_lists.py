@@ -79,7 +79,7 @@ def _spaced(start: float, stop: float, count: int, *, log: bool, name: str, text
     if log:
         if start <= 0 or stop <= 0:
             raise UsageError(f"{name}: a log-spaced range start:stop:count needs start, "
-                             f"stop > 0 (use a comma list for zero or negative loads)")
+                             f"stop > 0 (use a comma list for zero or negative values)")
         return np.geomspace(start, stop, count)
     with np.errstate(over="ignore", invalid="ignore"):
         values = np.linspace(start, stop, count)

@@ -6,7 +6,8 @@ r"""Reading measured data from CSV files: columns found by their header names an
   ``P_err``, ``d_err``, ``P_off_err``;
 * physical, the unit in brackets: ``load [mN]``, ``friction [nN]``, ``separation [nm]``,
   ``pull_off [nN]``, ``friction_err [nN]`` (or in parentheses, ``load (mN)``, or after a
-  slash, ``load / mN``), or in SI names: ``P_N``, ``F_N``, ``d_m``.
+  slash between blanks, ``load / mN``, where the text is a unit symbol), or in SI names:
+  ``P_N``, ``F_N``, ``d_m``.
   Other spellings: ``normal_force``/``force`` (load), ``friction_force``/``lateral_force``,
   ``friction_coefficient``, ``distance``/``gap`` (separation), ``pull_off_force``/
   ``adhesion_force``.  A physical column without a unit takes one from ``units``
@@ -29,115 +30,16 @@ from __future__ import annotations
 import csv
 import math
 import os
-import re
-from decimal import Decimal
 
 import numpy as np
 
-from ..quantities import FIT_PARAMETERS, MODEL_PARAMETERS, PHYSICAL_PARAMETERS
 from ..units import parse_quantity, strict_float
 from .data import KINDS, MAX_ROWS, Dataset
+from .headers import ROLES, SI_UNITS, UNIT_FLAGS, classify_header, condition_names, to_si_exact, unit_factor
 
 __all__ = ["ROLES", "read_data", "as_dataset"]
 
-#: Column roles and their spellings (lower case).  The first is the dimensionless symbol.
-ROLES = {
-    "load": ("p", "load", "normal_force", "normal_load", "force"),
-    "friction": ("f", "friction", "friction_force", "lateral_force"),
-    "mu": ("mu", "friction_coefficient"),
-    "separation": ("d", "separation", "distance", "gap"),
-    "pull_off": ("p_off", "pull_off", "pull_off_force", "adhesion_force"),
-}
-_SI = {"load": "N", "friction": "N", "separation": "m", "pull_off": "N", "mu": ""}
-_UNIT_KEY = {"load": "load", "pull_off": "load", "friction": "friction", "separation": "separation"}
-_SUFFIX = {"_n": "N", "_m": "m"}
-#: A header cell: a name and, optionally, its unit in brackets ('load [nN]'), in parentheses
-#: ('load (nN)', as spreadsheets write it) or after a slash ('load / nN', ISO 80000-1).
-_HEADER = re.compile(r"^\s*(?P<base>[^\[\]()/]*?)\s*(?:\[(?P<unit>[^\[\]]*)\]|\((?P<paren>[^()]*)\)"
-                     r"|/\s*(?P<slash>[^\[\]()]*?))?\s*$")
 _NAN_TEXT = {"", "nan", "na", "n/a", "none", "null"}
-
-
-def _condition_names() -> dict:
-    """Header base (lower case) -> (fit name, SI unit or '' if dimensionless)."""
-    out = {}
-    for registry in (MODEL_PARAMETERS, FIT_PARAMETERS):
-        for q in registry.values():
-            out[q.name.lower()] = (q.name, "")
-    for q in PHYSICAL_PARAMETERS.values():
-        if q.si_name is None:  # a dimensionless physical quantity (alpha_n)
-            out[q.name.lower()] = (q.name, "")
-            continue
-        out[q.name.lower()] = (q.si_name, q.si_unit)
-        out[q.si_name.lower()] = (q.si_name, q.si_unit)
-    return out
-
-
-def _classify(header: str):
-    """(role, is_err, unit or None, SI-suffix unit or None) of one header cell; role None if unknown."""
-    m = _HEADER.match(header)
-    base = (m.group("base") if m else header).strip().lower().replace(" ", "_").replace("-", "_")
-    given = next((m.group(g) for g in ("unit", "paren", "slash") if m.group(g) is not None), None) if m else None
-    unit = given.strip() if given is not None else None
-    if m and given is not None and m.group("unit") is None and not _is_unit_of(base, unit):
-        # 'F/P', 'friction/load', 'mu (-)', 'friction (a.u.)': a name, not a name and its unit
-        # (read as units they made files that were read before ambiguous: found by a review)
-        base, unit = header.strip().lower().replace(" ", "_").replace("-", "_"), None
-    suffix_unit = None
-    for suffix, si in _SUFFIX.items():
-        stem = base[: -len(suffix)]
-        if base.endswith(suffix) and _role(stem.removesuffix("_err"))[0]:
-            base, suffix_unit = stem, si
-            break
-    is_err = False
-    for tail in ("_err", "_error", "_sigma"):
-        if base.endswith(tail):
-            base, is_err = base[: -len(tail)], True
-            break
-    role, symbol = _role(base)
-    return role, is_err, unit, suffix_unit, symbol, base
-
-
-def _is_unit_of(base: str, unit: str) -> bool:
-    """Whether ``unit`` (from 'name (unit)' or 'name / unit') is a unit of the physical column
-    ``base`` names; only physical names (load, friction, separation, pull_off, ...) take one."""
-    role, symbol = _role(base.removesuffix("_err").removesuffix("_error").removesuffix("_sigma"))
-    if role is None or symbol or not _SI[role]:
-        return False
-    try:
-        return parse_quantity(f"1 {unit}", _SI[role], "unit") > 0
-    except ValueError:
-        return False
-
-
-def _role(base):
-    for role, names in ROLES.items():
-        if base in names:
-            return role, base == names[0]
-    return None, False
-
-
-def _to_si(value: float, factor: float) -> float:
-    """``value`` times ``factor``; for a decimal prefix (``factor`` a power of ten: 1e-9 for nN)
-    the decimal digits of the value get its exponent, so that 3.3 nN is 3.3e-09 as the API's
-    3.3e-9 and the command line's '3.3nN' are (3.3 * 1e-9 is one ulp off: found by a review)."""
-    if factor > 0 and math.isfinite(value):
-        k = round(math.log10(factor))
-        if abs(k) <= 22 and factor == float(f"1e{k}"):
-            return float(Decimal(repr(value)).scaleb(k))
-    return value * factor
-
-
-def _factor(unit_text: str, role: str, header: str) -> float:
-    si = _SI[role]
-    if unit_text in ("", "1", "-") and si == "":
-        return 1.0
-    if si == "":
-        raise ValueError(f"column {header!r}: a friction coefficient is dimensionless, got the unit {unit_text!r}")
-    value = parse_quantity(f"1 {unit_text}", si, f"column {header!r}")
-    if not value > 0:
-        raise ValueError(f"column {header!r}: unit {unit_text!r} is not a positive multiple of {si}")
-    return value
 
 
 def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
@@ -193,8 +95,13 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
     if len(data_rows) > MAX_ROWS:
         raise ValueError(f"{name}: {len(data_rows)} rows, more than MAX_ROWS = {MAX_ROWS}")
     columns, conditions, ignored = _columns(headers, units, name)
-    kind = _kind(columns, kind, name)
-    used = _used(columns, kind, name)
+    try:
+        kind = _kind(columns, kind, name)
+        used = _used(columns, kind, name)
+    except ValueError as err:  # say which columns were not recognised ('load (nn)': a typo)
+        if ignored and "missing column" in str(err):
+            raise ValueError(f"{err} (not recognised: {', '.join(map(repr, ignored))})") from None
+        raise
     physical = _physical(columns, used, name)
     values = {key: [] for key in (*used, *conditions)}
     index = {**{k: columns[k][0] for k in used}, **{k: v[0] for k, v in conditions.items()}}
@@ -213,7 +120,7 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
             dropped += 1
             continue
         for k, v in cells.items():
-            values[k].append(_to_si(v, factor[k]))
+            values[k].append(to_si_exact(v, factor[k], row[index[k]]))
     if not values[used[0]]:
         raise ValueError(f"{name}: every row holds a NaN; nothing left to fit")
     notes = []
@@ -251,9 +158,9 @@ def _columns(headers, units, name):
     ``physical`` is None for a friction coefficient (dimensionless either way).
     """
     columns, conditions, ignored, pending = {}, {}, [], []
-    cond_names = _condition_names()
+    cond_names = condition_names()
     for i, header in enumerate(headers):
-        role, is_err, unit, suffix_unit, symbol, base = _classify(header)
+        role, is_err, unit, suffix_unit, symbol, base = classify_header(header)
         if role is None:
             if base in cond_names and not is_err:
                 conditions[cond_names[base][0]] = (i, _condition_factor(cond_names[base], unit, header, name))
@@ -269,26 +176,26 @@ def _columns(headers, units, name):
             raise ValueError(f"{name}: column {header!r} has two units")
         unit = unit if unit is not None else suffix_unit
         if role == "mu":
-            columns[key] = (i, _factor(unit or "", "mu", header), None, header)
+            columns[key] = (i, unit_factor(unit or "", "mu", header), None, header)
             continue
-        flag = units.get(_UNIT_KEY[role])
+        flag = units.get(UNIT_FLAGS[role])
         if flag is not None:
             if unit is None:
                 unit = flag
-            elif not math.isclose(_factor(unit, role, header), _factor(flag, role, header), rel_tol=1e-12):
+            elif not math.isclose(unit_factor(unit, role, header), unit_factor(flag, role, header), rel_tol=1e-12):
                 raise ValueError(f"{name}: inconsistent units: column {header!r} says [{unit}] but the "
-                                 f"{_UNIT_KEY[role]} unit given is {flag!r}")
+                                 f"{UNIT_FLAGS[role]} unit given is {flag!r}")
         if unit is not None:
-            columns[key] = (i, _factor(unit, role, header), True, header)
+            columns[key] = (i, unit_factor(unit, role, header), True, header)
         elif is_err:
             pending.append((key, header, i))  # takes its value column's unit
         elif symbol:
             columns[key] = (i, 1.0, False, header)  # the paper's dimensionless symbol
         else:
-            example = f"{header} [{'nN' if _SI[role] == 'N' else 'nm'}]"
+            example = f"{header} [{'nN' if SI_UNITS[role] == 'N' else 'nm'}]"
             raise ValueError(f"{name}: column {header!r} has no unit: write it in brackets ({example!r}) or give "
-                             f"the {_UNIT_KEY[role]} unit (units={{'{_UNIT_KEY[role]}': ...}}, "
-                             f"--{_UNIT_KEY[role]}-unit)")
+                             f"the {UNIT_FLAGS[role]} unit (units={{'{UNIT_FLAGS[role]}': ...}}, "
+                             f"--{UNIT_FLAGS[role]}-unit)")
     for key, header, i in pending:
         value = columns.get(key.removesuffix("_err"))
         factor, physical = (value[1], value[2]) if value is not None else (1.0, False)

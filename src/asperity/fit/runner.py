@@ -102,8 +102,11 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = 
                 restart_note = (f"the fit from the given start stopped at chi-square {first.chisqr:.6g}; a restart "
                                 f"from another start reached {result.chisqr:.6g} (kept): the start matters "
                                 "for these data, give one near the answer if you know it")
+        unsettled = None
         for _ in range(REWEIGHT_ROUNDS if "relative" in problem.weights and not result.aborted else 0):
-            if problem.reweight(result.params) < 1e-6:
+            unsettled = problem.reweight(result.params)
+            if unsettled < 1e-6:
+                unsettled = None
                 break
             result = minimizer.least_squares(params=result.params, **kws)
         if problem.loss != "linear" and not result.aborted:
@@ -113,7 +116,14 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = 
         nfev = objective.calls
         analysis = _analyse(problem, minimizer, result, absolute, ci, profile_budget)
     if restart_note:
-        analysis["warnings"].insert(0, restart_note)
+        analysis["warnings"].insert(0, restart_note + (" (chi-squares with the first weights, before the relative "
+                                                       "weights were re-weighted)" if "relative" in problem.weights
+                                                       else ""))
+    if unsettled is not None:  # (silent before: the second review)
+        analysis["warnings"].append(f"the relative weights did not settle in {REWEIGHT_ROUNDS} re-fits (the last "
+                                    f"changed them by up to {unsettled:.2g}; the model is near 0 at some points): "
+                                    "the values and errors are those of the last re-fit; give an uncertainty column "
+                                    "or use weights='none'")
     objective_profile = objective.calls - nfev
     return _result(problem, result, analysis, nfev, objective_profile, lmfit, grid, problem.values(start))
 
