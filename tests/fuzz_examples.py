@@ -277,6 +277,7 @@ SKIP = {
     "asperity.plasticity.PlasticityWarning": "a warning category",
     "asperity.plasticity.ContactPlasticity": "a mixin of PhysicalContact, without parameters",
     "asperity.physical_description.ContactDescription": "a mixin of PhysicalContact, without parameters",
+    "asperity.physical_groups.ContactGroups": "a mixin of PhysicalContact, without parameters",
     "asperity.fit.base.FitModel": "an abstract base class without parameters",
     "asperity.fit.gw.GWFit": "built by get_model (fuzzed) from a validated contact",
     **{f"asperity.fit.laws.{n}Fit": "built by get_model (fuzzed) from a validated material"

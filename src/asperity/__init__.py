@@ -120,6 +120,7 @@ _SUBMODULES = (
     "persson",
     "physical",
     "physical_cycle",
+    "physical_groups",
     "physical_results",
     "plasticity",
     "quadrature",

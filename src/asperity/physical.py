@@ -52,7 +52,6 @@ import warnings
 
 import numpy as np
 
-from . import groups
 from ._validation import (
     check_1d,
     check_bool,
@@ -69,6 +68,7 @@ from .interaction import interaction_for_surface
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
 from .physical_description import ContactDescription
+from .physical_groups import ContactGroups
 from .physical_results import (
     AREA_FRACTION_CAUTION,
     AREA_FRACTION_LIMIT,
@@ -104,7 +104,7 @@ __all__ = [
 ]
 
 
-class PhysicalContact(ContactDescription, ContactPlasticity):
+class PhysicalContact(ContactGroups, ContactDescription, ContactPlasticity):
     r"""A real material against a rigid flat through a real rough surface, in SI units.
 
     Parameters
@@ -221,81 +221,6 @@ class PhysicalContact(ContactDescription, ContactPlasticity):
             raise ValueError(f"friction (shear strength tau) = {tau:g} Pa is out of range for G* = {self.G_star:g} Pa: "
                              "tau/G* must be a positive, finite double")
         return ConstantShear(ratio)
-
-    # -- material and surface -----------------------------------------------------------
-    @property
-    def b(self) -> float:
-        """Burgers vector (m)."""
-        return self.material.b
-
-    @property
-    def nu(self) -> float:
-        """Poisson's ratio (for a pair: the effective 1 - G*/E*)."""
-        return self.material.nu
-
-    @property
-    def E_star(self) -> float:
-        """Composite Young's modulus (Pa)."""
-        return self.material.E_star
-
-    @property
-    def G(self) -> float:
-        """Shear modulus of the force unit G b^2 (Pa); G* = 2G."""
-        return self.material.G
-
-    @property
-    def G_star(self) -> float:
-        """Effective shear modulus 2G (Pa), the unit of friction stress."""
-        return self.material.G_star
-
-    @property
-    def N(self) -> float:
-        """Number of asperities eta * area."""
-        return self.surface.N
-
-    # -- groups -------------------------------------------------------------------------
-    @property
-    def alpha(self) -> float:
-        """Roughness parameter (sigma_s/R)^(1/2) (Eq 7)."""
-        return float(groups.roughness_alpha(self.surface.sigma_s, self.surface.R))
-
-    @property
-    def beta(self) -> float:
-        """Friction regime parameter (R sigma_s)^(1/2)/b (Eq 7)."""
-        return float(groups.regime_beta(self.surface.sigma_s, self.surface.R, self.b))
-
-    @property
-    def gamma(self) -> float:
-        """Adhesion parameter w/(E* b) (Eq 16); 0 without adhesion."""
-        return float(groups.adhesion_gamma(self.w, self.E_star, self.b)) if self.w > 0 else 0.0
-
-    @property
-    def h_over_b(self) -> float:
-        """Dugdale range over Burgers vector."""
-        return self.h / self.b
-
-    @property
-    def lam(self) -> float:
-        """Maugis parameter from the groups (Eq 15); equal to Eq (14) with sigma0 = w/h; 0 without adhesion."""
-        if self.gamma == 0.0:
-            return 0.0
-        return float(groups.maugis_lambda(self.alpha, self.beta, self.gamma, self.h_over_b))
-
-    @property
-    def force_scale(self) -> float:
-        """Force unit N G b^2 (N)."""
-        return self.N * (self.G * self.b**2)
-
-    @property
-    def area_scale(self) -> float:
-        """Area unit N pi b^2 (m^2)."""
-        return self.N * math.pi * self.b**2
-
-    @property
-    def regime(self) -> str:
-        """Single-asperity adhesion regime of :attr:`lam`: ``'DMT'``, ``'Maugis-Dugdale'``,
-        ``'JKR'`` (:func:`~asperity.regimes.adhesion_regime`), or ``'Hertz'`` without adhesion."""
-        return "Hertz" if self.gamma == 0.0 else adhesion_regime(self.lam)
 
     @functools.cached_property
     def model(self) -> Model:
