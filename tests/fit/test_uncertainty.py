@@ -310,3 +310,24 @@ def test_relative_weights_that_do_not_settle_are_said_to(monkeypatch):
     monkeypatch.setattr(runner, "REWEIGHT_ROUNDS", 10)
     res = fit_friction_load(data, "jkr", fix={"E_star_Pa": E_, "R_m": R_}, ci="wald")
     assert not any("did not settle" in w for w in res.warnings)
+
+
+def test_a_profile_end_is_where_a_fresh_fit_rises_by_the_level():
+    """Found in the worked example: the profile of w re-fitted sigma0 and tau from the previous
+    trial only, slid into another valley and put the lower end too close (5.83e-4 where a fit
+    from the best values at that w has not yet risen by 3.84).  At each end of a profile
+    interval, an independent fit with the parameter held there, started from the best fit,
+    must have a chi-square 3.84 above the best (stated uncertainties)."""
+    from pathlib import Path
+
+    from asperity.fit import read_data
+
+    path = Path(__file__).resolve().parents[2] / "examples" / "data" / "afm_friction_synthetic.csv"
+    data = read_data(str(path))
+    best = fit_friction_load(data, "md", material="Si", fix={"R_m": 2e-6}, ci="profile")
+    p = best.parameters["w_J_m2"]
+    assert p.method == "profile"
+    for end in p.ci95:
+        held = fit_friction_load(data, "md", material="Si", fix={"R_m": 2e-6, "w_J_m2": end}, ci="wald",
+                                 start={k: best.values[k] for k in ("sigma0_Pa", "tau_Pa")}, restarts="always")
+        assert held.chisqr - best.chisqr == pytest.approx(stats.chi2.ppf(0.95, 1), abs=0.05)

@@ -341,25 +341,42 @@ def _profile(minimizer, result, name, absolute, bounds, hold=()):
     others = [n for n, p in result.params.items() if p.vary and n != name and n not in hold]
     state = {}
 
-    def chisqr(x):
-        params = state.get("params", result.params).copy()
+    def refit(start, x):
+        params = start.copy()
         params[name].set(value=x, vary=False)
         for held in hold:
             params[held].set(vary=False)
         if not others:
             r = minimizer.userfcn(params, *minimizer.userargs, **minimizer.userkws)
-            return float(np.sum(np.square(r)))
+            return float(np.sum(np.square(r))), None
         fit = minimizer.least_squares(params=params, x_scale="jac", ftol=1e-10, xtol=1e-10, gtol=1e-10,
                                       max_nfev=100 * (len(others) + 1))
-        if not fit.aborted and math.isfinite(fit.chisqr):
-            state["params"] = fit.params
-        return float(fit.chisqr) if math.isfinite(fit.chisqr) else math.inf
+        ok = not fit.aborted and math.isfinite(fit.chisqr)
+        return (float(fit.chisqr) if ok else math.inf), (fit.params if ok else None)
+
+    def chisqr(x):
+        # from the previous trial on this side and from the best fit, the lower kept: a warm
+        # start alone can slide into another valley (Maugis-Dugdale's JKR limit), which made a
+        # profile end too close (the worked example's w)
+        trials = [refit(result.params, x)]
+        if others and "params" in state:
+            trials.append(refit(state["params"], x))
+        value, params = min(trials, key=lambda t: t[0])
+        if params is not None:
+            state["params"] = params
+        return value
+
+    seen = {}
 
     def level(x):
-        new = chisqr(x)
-        if absolute:
-            return stats.chi2.cdf(max(new - result.chisqr, 0.0), df=1) - 0.95
-        return stats.f.cdf(max(new / result.chisqr - 1.0, 0.0) * nfree, 1, nfree) - 0.95
+        # Remembered: a re-fit warm-started from another trial can land elsewhere, and Brent's
+        # method re-evaluates the ends of the bracket the outward search found (a sign it then
+        # did not see again failed the profile of the worked example's w)
+        if x not in seen:
+            new = chisqr(x)
+            seen[x] = (stats.chi2.cdf(max(new - result.chisqr, 0.0), df=1) - 0.95 if absolute else
+                       stats.f.cdf(max(new / result.chisqr - 1.0, 0.0) * nfree, 1, nfree) - 0.95)
+        return seen[x]
 
     lo_b, hi_b = bounds.get(name, (-math.inf, math.inf))
     ends = []
