@@ -7,7 +7,8 @@
   ``--h-star``, ``--size-effect``, ``--plastic-threshold``; added by both groups before,
   once), :func:`add_heights_argument` (the summit-height distribution ``--heights``, spelt
   as :data:`HEIGHTS_HELP` lists and read by :func:`asperity.heights.parse_heights`; added by
-  both groups too, once), :func:`add_surface_arguments` (a scan file for ``surface`` and ``bem``) and
+  both groups too, once), :func:`add_interaction_argument` (``--interaction``, the curve
+  commands only), :func:`add_surface_arguments` (a scan file for ``surface`` and ``bem``) and
   :func:`add_output_arguments` (``--format``, ``-o``, ``--plot``).
 * What builds the library's objects from them is in :mod:`asperity.cli._build`.
 * Lists and quantities (``a,b,c``, ``start:stop:count``, ``2nm``) come from
@@ -56,6 +57,7 @@ __all__ = [
     "add_body_arguments",
     "add_output_arguments",
     "add_plasticity_arguments",
+    "add_interaction_argument",
     "add_surface_arguments",
     "read_kwargs_from_args",
     "LAW_NAMES",
@@ -213,6 +215,17 @@ def add_plasticity_arguments(parser: argparse.ArgumentParser) -> None:
     p.add_argument("--plastic-threshold", dest="plastic_threshold", type=decimal, default=None,
                    help="with a physical contact and the elastic law: note when more than this share of the "
                         "asperities in contact is past the critical interference (default 0.01)")
+
+
+def add_interaction_argument(parser: argparse.ArgumentParser) -> None:
+    """``--interaction SPEC``: the asperity interaction of the curve commands (``load``,
+    ``separation``), read by :func:`asperity.cli._build.interaction_from_args`."""
+    parser.add_argument("--interaction", metavar="SPEC", default=None,
+                        help="asperity interaction (docs/validation.md): none (plain GW, the default) or "
+                             "cgp2008, the mean-field correction of Ciavarella, Greenwood & Paggi (2008), "
+                             "non-adhesive (--no-adhesion, or --gamma 0); with a physical contact its compliance "
+                             "follows from eta, A0, b and sigma_s, the dimensionless model needs it: "
+                             "cgp2008:k=0.05 (k = Delta/sigma_s per unit load P/(N G b^2))")
 
 
 _NU_HELP = (f"{MODEL_HELP['nu']} (the default of the dimensionless model); with a physical contact: Poisson's "

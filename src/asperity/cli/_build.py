@@ -3,10 +3,10 @@
 :func:`is_physical` tells a physical contact (``--material``, ``--sigma-s``, ...) from the
 dimensionless model (``--alpha``, ``--beta``); :func:`model_from_args` builds the
 :class:`asperity.Model`, :func:`contact_from_args` the :class:`asperity.PhysicalContact` (with
-:func:`material_from_args`, :func:`surface_from_args`, :func:`friction_from_args` and
-:func:`heights_from_args`); :func:`title` names either in one line.  The library checks every
-value (its ValueError names the parameter, which is the option's name without dashes); only
-the combination of options is checked here.  The options themselves are defined in
+:func:`material_from_args`, :func:`surface_from_args`, :func:`friction_from_args`,
+:func:`heights_from_args` and :func:`interaction_from_args`); :func:`title` names either in
+one line.  The library checks every value (its ValueError names the parameter, which is the
+option's name without dashes); only the combination of options is checked here.  The options themselves are defined in
 :mod:`asperity.cli._args`.
 
 Nothing here imports NumPy, SciPy or the model at module level.
@@ -20,7 +20,7 @@ from ._args import CONTACT_OPTIONS
 from ._lists import UsageError, optional_quantity, quantity, quantity_items
 
 __all__ = ["is_physical", "model_from_args", "law_from_args", "contact_from_args", "surface_from_args",
-           "friction_from_args",
+           "friction_from_args", "interaction_from_args",
            "material_from_args", "heights_from_args", "title", "SurfaceNote"]
 
 
@@ -85,8 +85,58 @@ def model_from_args(args):
     h_over_b = 1.0 if args.h_over_b is None else args.h_over_b
     friction = friction_from_args(args, physical=False)
     kwargs = {} if friction is None else {"friction": friction}
+    interaction = interaction_from_args(args, physical=False)
+    if interaction is not None:
+        kwargs["interaction"] = interaction
     return Model(args.alpha, args.beta, args.gamma or 0.0, nu=nu, h_over_b=h_over_b, law=law,
                  heights=heights_from_args(args), **kwargs)
+
+
+def interaction_from_args(args, *, physical: bool):
+    """The asperity interaction of ``--interaction SPEC`` (None without it or for ``none``).
+
+    ``none`` or ``cgp2008`` (Ciavarella, Greenwood & Paggi 2008, :mod:`asperity.interaction`).
+    A physical contact takes the name (its compliance follows from eta, A0, b and sigma_s);
+    the dimensionless model takes ``cgp2008:k=K``, a
+    :class:`~asperity.interaction.MeanFieldInteraction` of compliance K.  The correction is
+    non-adhesive: with adhesion (no ``--no-adhesion``, or ``--gamma`` > 0) it is refused here
+    with the option to add, before the library's refusal in its own words.
+    """
+    spec = getattr(args, "interaction", None)
+    if spec is None:
+        return None
+    name, _, rest = spec.strip().partition(":")
+    name = name.strip().lower()
+    from ..interaction import INTERACTIONS
+
+    if name not in INTERACTIONS:
+        raise UsageError(f"--interaction: expected one of {', '.join(INTERACTIONS)} (cgp2008:k=K without a "
+                         f"physical contact), got {spec!r}")
+    if name == "none":
+        if rest:
+            raise UsageError(f"--interaction none takes no parameter, got {spec!r}")
+        return None
+    if physical:
+        if rest:
+            raise UsageError(f"--interaction {name}: with a physical contact the compliance follows from eta, "
+                             f"A0, b and sigma_s; give --interaction {name} without ':k=...'")
+        if not args.no_adhesion:
+            raise UsageError(f"--interaction {name} (Ciavarella, Greenwood & Paggi 2008) is derived for "
+                             "non-adhesive contact: add --no-adhesion")
+        return name
+    key, eq, value = rest.partition("=")
+    if key.strip().lower() != "k" or not eq:
+        raise UsageError(f"--interaction {name}: the dimensionless model needs its compliance, e.g. "
+                         f"{name}:k=0.05 (or a physical contact, --material ...), got {spec!r}")
+    k = _number(value.strip(), f"--interaction {name}:k")
+    if not k >= 0.0 or k == float("inf"):
+        raise UsageError(f"--interaction {name}:k must be a finite number >= 0, got {value.strip()!r}")
+    if args.gamma:
+        raise UsageError(f"--interaction {name} (Ciavarella, Greenwood & Paggi 2008) is derived for "
+                         "non-adhesive contact: leave out --gamma (or give --gamma 0)")
+    from ..interaction import MeanFieldInteraction
+
+    return MeanFieldInteraction(k)
 
 
 def law_from_args(args):
@@ -212,7 +262,7 @@ def contact_from_args(args):
                            plasticity=args.law, hardness=optional_quantity(args.hardness, "Pa", "--hardness"),
                            h_star=optional_quantity(args.h_star, "m", "--h-star"),
                            size_effect=True if args.size_effect else None, heights=heights_from_args(args),
-                           **kwargs)
+                           interaction=interaction_from_args(args, physical=True), **kwargs)
 
 
 def title(args, contact=None) -> str:

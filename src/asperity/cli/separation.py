@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from ._args import UNITS, add_contact_arguments, add_model_arguments, add_output_arguments
+from ._args import UNITS, add_contact_arguments, add_interaction_argument, add_model_arguments, add_output_arguments
 
 NAME = "separation"
 HELP = "quantities versus separation d/sigma (Figs 7-8)"
@@ -15,6 +15,7 @@ EPILOG = f"Columns:\n{UNITS}"
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_model_arguments(parser)
     add_contact_arguments(parser)
+    add_interaction_argument(parser)
     parser.add_argument("--d", metavar="LIST",
                         help="separations d/sigma: 'a,b,c' or 'start:stop:count' (linearly spaced)")
     parser.add_argument("--separation", metavar="LIST",
