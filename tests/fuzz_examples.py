@@ -289,7 +289,7 @@ SKIP = {
                     "asperity.fit.uncertainty.central_jacobian", "asperity.fit.uncertainty.null_directions",
                     "asperity.fit.uncertainty.pseudo_covariance", "asperity.fit.uncertainty.correlated_pairs",
                     "asperity.fit.uncertainty.wald_interval", "asperity.fit.uncertainty.wald_reliable",
-                    "asperity.fit.uncertainty.profile_intervals", "asperity.fit.uncertainty.chi2_probability")},
+                    "asperity.fit.profile.profile_intervals", "asperity.fit.profile.chi2_probability")},
     # The cycle's inner steps, called on the objects cycle() and PhysicalContact.cycle() built and checked
     # (validation at the public boundary only: these run in the cycle's loops).
     **{name: "an inner step of the cycle, called by asperity.cycle / physical_cycle on the objects they built "

@@ -223,7 +223,7 @@ def test_help_and_startup(capsys):
                  "--drop-nan", "--load-unit", "friction [nN]", "w_J_m2", "--material", "--shared",
                  "--profile-budget"):
         assert word in out, word
-    from asperity.fit.uncertainty import PROFILE_BUDGET
+    from asperity.fit.profile import PROFILE_BUDGET
 
     assert f"(default {PROFILE_BUDGET:g}; inf: no limit;" in out  # the help's default is the library's
     probe = textwrap.dedent("""

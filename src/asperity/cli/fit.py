@@ -167,7 +167,7 @@ def _takes_material(names) -> bool:
 
 
 def _profile_budget(args):
-    from ..fit.uncertainty import PROFILE_BUDGET
+    from ..fit.profile import PROFILE_BUDGET
 
     if args.profile_budget is not None and args.ci == "wald":
         raise UsageError("--profile-budget limits the profile likelihoods, which --ci wald never computes")

@@ -22,8 +22,9 @@ best?  This package answers it (``pip install 'asperity[fit]'``: lmfit):
 
 The modules: :mod:`~asperity.fit.data` and :mod:`~asperity.fit.read` (data),
 :mod:`~asperity.fit.models` and :mod:`~asperity.fit.gw` (models),
-:mod:`~asperity.fit.engine` (parameters, weights, residuals), :mod:`~asperity.fit.runner`
-and :mod:`~asperity.fit.uncertainty` (minimiser, errors, identifiability),
+:mod:`~asperity.fit.engine` (parameters, weights, residuals), :mod:`~asperity.fit.runner`,
+:mod:`~asperity.fit.uncertainty` and :mod:`~asperity.fit.profile` (minimiser, errors,
+identifiability, profile likelihoods),
 :mod:`~asperity.fit.result` and :mod:`~asperity.fit.plot` (results),
 :mod:`~asperity.fit.api`, :mod:`~asperity.fit.joint` and :mod:`~asperity.fit.compare` (the
 functions above).  lmfit is imported only when a fit runs,

@@ -45,7 +45,7 @@ from .models import get_model
 from .read import as_dataset
 from .result import FitResult
 from .runner import fit_problem
-from .uncertainty import PROFILE_BUDGET
+from .profile import PROFILE_BUDGET
 
 __all__ = ["fit_friction_load", "fit_force_separation", "fit_pull_off"]
 

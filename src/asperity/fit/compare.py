@@ -14,7 +14,7 @@ from .models import MODELS, contact_refusal, get_model, material_refusal, model_
 from .read import as_dataset
 from .result import Comparison
 from .runner import fit_problem
-from .uncertainty import PROFILE_BUDGET
+from .profile import PROFILE_BUDGET
 
 __all__ = ["compare_models"]
 

@@ -11,7 +11,7 @@ from .models import get_model
 from .read import as_dataset
 from .result import FitResult
 from .runner import fit_problem
-from .uncertainty import PROFILE_BUDGET
+from .profile import PROFILE_BUDGET
 
 __all__ = ["fit_joint"]
 

@@ -22,12 +22,11 @@ from .build import build_problem
 from .engine import LOSSES, WEIGHTS, Problem
 from .restarts import RESTARTS, restart_points, suspicious
 from .result import FitResult, ParameterEstimate
+from .profile import PROFILE_BUDGET, profile_intervals
 from .uncertainty import (
-    PROFILE_BUDGET,
     central_jacobian,
     correlated_pairs,
     null_directions,
-    profile_intervals,
     pseudo_covariance,
     wald_interval,
     wald_reliable,
@@ -71,7 +70,7 @@ def run(problem: Problem, *, ci: str = "auto", grid: int = 200, restarts: str = 
     looks wrong (:func:`suspicious`) is repeated from the starts of
     :func:`restart_points` and the lowest chi-square kept; ``'always'`` does so for every
     fit.  A restart that wins is reported among the warnings.  ``profile_budget``: seconds the
-    profile likelihoods may take (:func:`~asperity.fit.uncertainty.profile_intervals`).
+    profile likelihoods may take (:func:`~asperity.fit.profile.profile_intervals`).
     """
     if ci not in CI_METHODS:
         raise ValueError(f"ci must be one of {', '.join(CI_METHODS)}, got {ci!r}")
