@@ -29,7 +29,7 @@ DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabul
                    "asperity.maugis_dugdale_load", "asperity.maugis_units", "asperity.cos", "asperity.amontons",
                    "asperity.fit.api", "asperity.fit.joint", "asperity.fit.compare",
                    "asperity.persson", "asperity.icha.field", "asperity.icha.solver", "asperity.icha.summits",
-                   "asperity.icha.contact",
+                   "asperity.icha.contact", "asperity.icha.rectangle",
                    "asperity.heights.base", "asperity.heights.gaussian", "asperity.heights.exponential",
                    "asperity.heights.weibull", "asperity.heights.pearson", "asperity.heights.johnson",
                    "asperity.heights.mixture", "asperity.heights.empirical", "asperity.heights.registry",

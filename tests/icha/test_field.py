@@ -12,10 +12,10 @@ from scipy import integrate
 from asperity.icha.field import (
     FreeKernel,
     PeriodicKernel,
-    boussinesq_rectangle_mean,
     hertz_displacement,
     hertz_excess,
 )
+from asperity.icha.rectangle import boussinesq_rectangle_mean
 
 E = 1e11
 

@@ -42,10 +42,10 @@ Data may be a :class:`~asperity.fit.data.Dataset` or the path of a CSV file (rea
 from __future__ import annotations
 
 from .models import get_model
+from .profile import PROFILE_BUDGET
 from .read import as_dataset
 from .result import FitResult
 from .runner import fit_problem
-from .profile import PROFILE_BUDGET
 
 __all__ = ["fit_friction_load", "fit_force_separation", "fit_pull_off"]
 

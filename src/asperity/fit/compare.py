@@ -11,10 +11,10 @@ from __future__ import annotations
 from .base import FitModel
 from .build import parameter_names
 from .models import MODELS, contact_refusal, get_model, material_refusal, model_class
+from .profile import PROFILE_BUDGET
 from .read import as_dataset
 from .result import Comparison
 from .runner import fit_problem
-from .profile import PROFILE_BUDGET
 
 __all__ = ["compare_models"]
 

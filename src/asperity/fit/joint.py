@@ -8,10 +8,10 @@ The options are those of :mod:`asperity.fit.api`.
 from __future__ import annotations
 
 from .models import get_model
+from .profile import PROFILE_BUDGET
 from .read import as_dataset
 from .result import FitResult
 from .runner import fit_problem
-from .profile import PROFILE_BUDGET
 
 __all__ = ["fit_joint"]
 

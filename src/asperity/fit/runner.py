@@ -20,9 +20,9 @@ from .._validation import check_integer, check_scalar_positive
 from .._warnings import AsperityWarning
 from .build import build_problem
 from .engine import LOSSES, WEIGHTS, Problem
+from .profile import PROFILE_BUDGET, profile_intervals
 from .restarts import RESTARTS, restart_points, suspicious
 from .result import FitResult, ParameterEstimate
-from .profile import PROFILE_BUDGET, profile_intervals
 from .uncertainty import (
     central_jacobian,
     correlated_pairs,

@@ -41,7 +41,8 @@ References
 """
 
 from .contact import MAX_LOADS, MAX_SUMMITS, P_BAR_RANGE, IchaCurve, icha_contact, icha_curve
-from .field import FreeKernel, PeriodicKernel, boussinesq_rectangle_mean, hertz_displacement, hertz_excess
+from .field import FreeKernel, PeriodicKernel, hertz_displacement, hertz_excess
+from .rectangle import boussinesq_rectangle_mean
 from .solver import IchaState, merge_spots
 from .summits import RADII, MapSummits, map_summits
 

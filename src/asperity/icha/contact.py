@@ -17,7 +17,8 @@ import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._validation import as_float_array, check_mean_pressure, check_scalar_positive
-from .field import FreeKernel, PeriodicKernel, boussinesq_rectangle_mean
+from .field import FreeKernel, PeriodicKernel
+from .rectangle import boussinesq_rectangle_mean
 from .solver import IchaState
 from .summits import MapSummits, map_summits
 

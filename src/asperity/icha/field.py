@@ -52,8 +52,7 @@ from scipy import ndimage, special
 
 from .._validation import as_float_array, check_scalar_positive
 
-__all__ = ["hertz_displacement", "hertz_excess", "boussinesq_rectangle_mean", "FreeKernel", "PeriodicKernel",
-           "EWALD_FRACTION"]
+__all__ = ["hertz_displacement", "hertz_excess", "FreeKernel", "PeriodicKernel", "EWALD_FRACTION"]
 
 #: Ewald splitting length :math:`\xi` as a fraction of the shorter side of the cell.
 EWALD_FRACTION = 1.0 / 8.0
@@ -204,59 +203,6 @@ def hertz_excess(r, a):
     if np.any(r <= 0) or np.any(a < 0):
         raise ValueError("r must be > 0 and a >= 0")
     return _excess(r, a)
-
-
-def boussinesq_rectangle_mean(x, y, size_x, size_y):
-    r"""Mean over the rectangle :math:`[0, L_x]\times[0, L_y]` of :math:`1/r` from a point inside it.
-
-    .. math::
-        \frac{1}{L_xL_y}\iint\frac{\mathrm dA}{\sqrt{(x'-x)^2+(y'-y)^2}},\qquad
-        \int_0^X\!\!\int_0^Y\frac{\mathrm dy\,\mathrm dx}{\sqrt{x^2+y^2}}
-        = X\sinh^{-1}\frac YX + Y\sinh^{-1}\frac XY
-
-    summed over the four quadrants around the point.  Times :math:`F/\pi E^*`, the mean
-    displacement of a free (non-periodic) scan under a point force.
-
-    Parameters
-    ----------
-    x, y : array_like
-        Position of the point [m], within :math:`[0, L_x]\times[0, L_y]`.
-    size_x, size_y : float
-        Sides :math:`L_x, L_y` [m], > 0.
-
-    Returns
-    -------
-    ndarray
-        The mean [1/m], the broadcast shape of ``x`` and ``y``.
-
-    Raises
-    ------
-    ValueError
-        For a point outside the rectangle or a non-positive side.
-
-    Examples
-    --------
-    >>> round(float(boussinesq_rectangle_mean(0.5, 0.5, 1.0, 1.0)), 6)   # 4 asinh(1) / 0.5 ... per unit area
-    3.525494
-
-    References
-    ----------
-    Johnson (1985), §3.2, Eq (3.19), integrated over a rectangle.
-    """
-    x, y = as_float_array(x, "x", allow_empty=True), as_float_array(y, "y", allow_empty=True)
-    lx, ly = check_scalar_positive(size_x, "size_x", "m"), check_scalar_positive(size_y, "size_y", "m")
-    if np.any((x < 0) | (x > lx) | (y < 0) | (y > ly)):
-        raise ValueError("the point must lie within the rectangle")
-
-    def corner(X, Y):
-        X, Y = np.broadcast_arrays(X, Y)
-        out = np.zeros(X.shape)
-        ok = (X > 0) & (Y > 0)
-        out[ok] = X[ok] * np.arcsinh(Y[ok] / X[ok]) + Y[ok] * np.arcsinh(X[ok] / Y[ok])
-        return out
-
-    total = corner(x, y) + corner(lx - x, y) + corner(x, ly - y) + corner(lx - x, ly - y)
-    return total / (lx * ly)
 
 
 def _point_matrix(r, field, diagonal):
