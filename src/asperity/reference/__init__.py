@@ -48,7 +48,8 @@ Conventions (all quantities per asperity, i.e. divided by ``N``)
 
 Modules mirror the ones they check: :mod:`.maugis_dugdale`, :mod:`.maugis_dugdale_branch` and
 :mod:`.maugis_dugdale_load` (mpmath), :mod:`.friction_stress`, :mod:`.groups` and
-:mod:`.multi_asperity` (``gw_moment``, ``separation_point``, ``load_point``, ``pull_off``),
+:mod:`.gw_moment` (``gw_moment``), :mod:`.multi_asperity` (``separation_point``, ``load_point``,
+``pull_off``),
 :mod:`.elastic_plastic` (the Jackson-Green asperity with the Nix-Gao size effect and its
 integrals) and :mod:`.cycle` (``approach_point``, ``retract_point``, ``cycle_energy``,
 ``retract_pull_off``: loading-unloading cycles); :mod:`.common` holds mpmath and the input
@@ -59,10 +60,11 @@ from .cycle import approach_point, cycle_energy, retract_point, retract_pull_off
 from .elastic_plastic import jg_asperity, jg_critical_penetration, jg_load_point, jg_separation_point
 from .friction_stress import hk_tau
 from .groups import conversion_factors
+from .gw_moment import gw_moment
 from .maugis_dugdale import md_curve, md_lambda_c
 from .maugis_dugdale_branch import md_branch_end, md_point, md_pull_off
 from .maugis_dugdale_load import md_load_point
-from .multi_asperity import gw_moment, load_point, pull_off, separation_point
+from .multi_asperity import load_point, pull_off, separation_point
 
 __all__ = [
     "approach_point",

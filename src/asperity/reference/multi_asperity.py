@@ -16,12 +16,12 @@ import math
 import numpy as np
 from scipy import integrate, optimize
 
-from .common import MP, finite, mpmath, positive
+from .common import finite, positive
 from .friction_stress import hk_tau
 from .groups import conversion_factors
 from .maugis_dugdale_branch import branch_D_for_A, branch_end, branch_P_zeros, branch_point_offset
 
-__all__ = ["gw_moment", "separation_point", "load_point", "pull_off"]
+__all__ = ["separation_point", "load_point", "pull_off"]
 
 _SQRT2PI = math.sqrt(2.0 * math.pi)
 #: Quadrature settings of the outer Greenwood-Williamson integrals.
@@ -92,43 +92,6 @@ class Params:
             self.a1,
             self.a2,
         )
-
-
-def gw_moment(d, order):
-    """Greenwood-Williamson moment ``int_d^inf (z - d)^order phi(z) dz`` (mpmath).
-
-    Parameters
-    ----------
-    d : float
-        Dimensionless separation.
-    order : float
-        Order ``k >= 0`` of the moment.
-
-    Returns
-    -------
-    float
-        The moment, computed with :func:`mpmath.quad` at 30 digits.
-    """
-    d = finite("d", d)
-    order = finite("order", order)
-    if order < 0:
-        raise ValueError(f"order must be >= 0, got {order!r}")
-    with MP.workdps(30):
-        dm = mpmath.mpf(d)
-        k = mpmath.mpf(order)
-        c = 1 / mpmath.sqrt(2 * mpmath.pi)
-
-        def f(u):
-            return u**k * c * mpmath.exp(-((u + dm) ** 2) / 2)
-
-        scale = 1 / (1 + max(d, 0.0))
-        pts = [mpmath.mpf(0), scale / 4, scale, 4 * scale]
-        if d < 0:
-            pts += [-dm / 2, -dm, -dm + 2]
-        pts = sorted(set(pts))
-        pts.append(pts[-1] + 8)
-        pts.append(mpmath.inf)
-        return float(mpmath.quad(f, pts))
 
 
 class _Local:
