@@ -207,6 +207,8 @@ def _valid_table(tmp: str) -> dict[str, callable]:
         "asperity.quadrature.gauss_legendre": lambda: {"n": 8},
         "asperity.quadrature.panel_edges": lambda: {"start": 0.0, "stop": 1.0, "first": 0.1},
         "asperity.quadrature.composite_nodes": lambda: {"edges": [0.0, 0.5, 1.0], "n": 4},
+        "asperity.quadrature.chebyshev_basis": lambda: {"n": 8},
+        "asperity.quadrature.legendre_to_chebyshev": lambda: {"n": 8},
         "asperity.quantities.quantity": lambda: {"name": "alpha"},
         "asperity.regimes.tabor_parameter": lambda: {"R": 1e-6, "w": 1.0, "E_star": 1e11, "z0": 3e-10},
         "asperity.regimes.maugis_parameter": lambda: {"R": 1e-6, "w": 1.0, "E_star": 1e11, "sigma0": 1e9},

@@ -40,7 +40,6 @@ References
 
 from __future__ import annotations
 
-import functools
 import math
 
 import numpy as np
@@ -49,7 +48,14 @@ from .asperity_law import ContactLaw
 from .heights import EDGE_BAND, HeightDistribution
 from .heights.base import decay_length, tanh_sinh
 from .heights.mixture import KernelGaussian
-from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
+from .quadrature import (
+    NODES_PER_PANEL,
+    chebyshev_basis,
+    composite_nodes,
+    gauss_legendre,
+    legendre_to_chebyshev,
+    panel_edges,
+)
 
 __all__ = ["HeightSums", "CHEBYSHEV_POINTS", "GRADED_POINTS", "D_MARGIN"]
 
@@ -62,33 +68,6 @@ GRADED_POINTS = 12
 D_MARGIN = 0.5
 _GRADE_MIN = 1e-12  # smallest graded panel next to a singular separation (relative)
 _BATCH_SPAN = 4.0  # separations evaluated together span at most this (in sigma)
-
-
-@functools.lru_cache(maxsize=4)
-def _chebyshev(n: int):
-    """First-kind Chebyshev points on [-1, 1], the values->coefficients matrix, the derivative matrix."""
-    m = np.arange(n)
-    theta = (2 * m + 1) * np.pi / (2 * n)
-    x = np.cos(theta)
-    T = 2.0 / n * np.cos(np.outer(m, theta))
-    T[0] *= 0.5
-    D = np.zeros((n, n))
-    for j in range(n):  # derivative of T_j in the T basis
-        c = np.zeros(n)
-        c[j] = 1.0
-        d = np.zeros(n + 1)
-        for k in range(n - 1, 0, -1):
-            d[k - 1] = d[k + 1] + 2 * k * c[k]
-        d[0] *= 0.5
-        D[:, j] = d[:n]
-    return x, T, D
-
-
-@functools.lru_cache(maxsize=4)
-def _panel_fit(n: int):
-    """Matrix taking values at the n Gauss-Legendre nodes of [0, 1] to Chebyshev coefficients in 2x - 1."""
-    x, _ = gauss_legendre(n)
-    return np.linalg.inv(np.cos(np.outer(np.arccos(2.0 * x - 1.0), np.arange(n))))
 
 
 def _chebyshev_values(s, n: int):
@@ -193,7 +172,7 @@ class HeightSums:
         self.q = np.stack([np.ones_like(u), P, F, a * a], axis=1).reshape(edges.size - 1, NODES_PER_PANEL, 4)
         self.weights = w[:, None] * self.q.reshape(-1, 4)
         # the law on each panel as a polynomial in its own variable (for the edge panels)
-        self._q_coef = np.einsum("kj,pjc->pkc", _panel_fit(NODES_PER_PANEL), self.q)
+        self._q_coef = np.einsum("kj,pjc->pkc", legendre_to_chebyshev(NODES_PER_PANEL), self.q)
         self._group()
 
     # -- quadrature in penetration ------------------------------------------------------
@@ -348,7 +327,7 @@ class HeightSums:
         narrow = (E[todo + 1] - E[todo]) < 0.25 * self._W
         jobs = []  # (batch, points, separations, integrals without the support-edge correction)
         for group, n in ((todo[~narrow], CHEBYSHEV_POINTS), (todo[narrow], GRADED_POINTS)):
-            xc = _chebyshev(n)[0]
+            xc = chebyshev_basis(n)[0]
             i = 0
             while i < group.size:
                 j = i + 1
@@ -365,7 +344,7 @@ class HeightSums:
                 ends = np.cumsum([job[2].size for job in jobs])[:-1]
                 jobs = [(bt, n, dn, S + part) for (bt, n, dn, S), part in zip(jobs, np.split(fix, ends), strict=True)]
         for batch, n, dn, S in jobs:
-            _, T, D = _chebyshev(n)
+            _, T, D = chebyshev_basis(n)
             a, b = E[batch], E[batch + 1]
             Q = self.heights.sf(dn + self.law.u_end)
             R = (S / np.where(Q > 0, Q, 1.0)[:, None]).reshape(batch.size, n, 4)

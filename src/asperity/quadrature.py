@@ -10,6 +10,17 @@ its width away from the endpoint singularity), the law's breakpoints as panel
 boundaries, and unit-width panels on integer edges further out.  Sixteen nodes per panel give errors
 far below 1e-12 for every integrand met here (see the tests against adaptive
 quadrature and closed forms).
+
+The tabulations in separation (:mod:`asperity.height_sums`) interpolate on Chebyshev points
+of the first kind: :func:`chebyshev_basis` gives the points, the values-to-coefficients
+matrix and the derivative matrix of the Chebyshev series, :func:`legendre_to_chebyshev` the
+coefficients of a polynomial known at the Gauss-Legendre nodes of a panel.
+
+References
+----------
+.. [1] J. C. Mason, D. C. Handscomb, *Chebyshev Polynomials*, Chapman & Hall/CRC (2003),
+   ch. 4 (discrete orthogonality at the zeros of :math:`T_n`), ch. 2 (derivatives of a
+   Chebyshev series).
 """
 
 from __future__ import annotations
@@ -21,7 +32,7 @@ import numpy as np
 
 from ._validation import check_1d, check_integer, check_scalar_real
 
-__all__ = ["gauss_legendre", "panel_edges", "composite_nodes"]
+__all__ = ["gauss_legendre", "panel_edges", "composite_nodes", "chebyshev_basis", "legendre_to_chebyshev"]
 
 NODES_PER_PANEL = 16
 GROWTH = 3.0
@@ -40,6 +51,69 @@ def gauss_legendre(n: int):
 def _gauss_legendre(n: int):
     x, w = np.polynomial.legendre.leggauss(n)
     return 0.5 * (x + 1.0), 0.5 * w
+
+
+def chebyshev_basis(n: int):
+    """First-kind Chebyshev points on [-1, 1] and the matrices of their series; cached.
+
+    Parameters
+    ----------
+    n : int
+        Number of points, 2 <= n <= 1000.
+
+    Returns
+    -------
+    x : ndarray, shape (n,)
+        :math:`x_m = \\cos((2m+1)\\pi/2n)`, the zeros of :math:`T_n`.
+    T : ndarray, shape (n, n)
+        Values at ``x`` to the coefficients :math:`c_k` of :math:`\\sum_k c_kT_k` (discrete
+        orthogonality of :math:`T_k` at the zeros of :math:`T_n`).
+    D : ndarray, shape (n, n)
+        Coefficients of a series to those of its derivative (the recurrence
+        :math:`c'_{k-1} = c'_{k+1} + 2kc_k`, :math:`c'_0` halved).
+    """
+    return _chebyshev_basis(check_integer(n, "n", 2, MAX_NODES_PER_PANEL))
+
+
+@functools.lru_cache(maxsize=4)
+def _chebyshev_basis(n: int):
+    m = np.arange(n)
+    theta = (2 * m + 1) * np.pi / (2 * n)
+    x = np.cos(theta)
+    T = 2.0 / n * np.cos(np.outer(m, theta))
+    T[0] *= 0.5
+    D = np.zeros((n, n))
+    for j in range(n):  # derivative of T_j in the T basis
+        c = np.zeros(n)
+        c[j] = 1.0
+        d = np.zeros(n + 1)
+        for k in range(n - 1, 0, -1):
+            d[k - 1] = d[k + 1] + 2 * k * c[k]
+        d[0] *= 0.5
+        D[:, j] = d[:n]
+    return x, T, D
+
+
+def legendre_to_chebyshev(n: int):
+    """Matrix taking values at the ``n`` Gauss-Legendre nodes of [0, 1] to the Chebyshev
+    coefficients in :math:`2x - 1` of the polynomial of degree ``n - 1`` through them; cached.
+
+    Parameters
+    ----------
+    n : int
+        Number of nodes, 1 <= n <= 1000.
+
+    Returns
+    -------
+    ndarray, shape (n, n)
+    """
+    return _legendre_to_chebyshev(check_integer(n, "n", 1, MAX_NODES_PER_PANEL))
+
+
+@functools.lru_cache(maxsize=4)
+def _legendre_to_chebyshev(n: int):
+    x, _ = _gauss_legendre(n)
+    return np.linalg.inv(np.cos(np.outer(np.arccos(2.0 * x - 1.0), np.arange(n))))
 
 
 def panel_edges(start, stop, first, breakpoints=(), lo_clip=None, growth=GROWTH):
