@@ -160,3 +160,19 @@ def test_no_object_address_in_any_signature():
 def test_heights_repr():
     assert repr(asperity.heights.GAUSSIAN) == "Gaussian()"
     assert "heights=Gaussian()" in str(inspect.signature(asperity.curves.load_curve))
+
+
+def test_no_control_characters_in_text_files():
+    """A docstring held a backspace ('\\b' of '\\big' in a non-raw string, then a raw one
+    kept the byte): no source, test or document may hold a control character other than
+    tab and newline."""
+    import pathlib
+    import re
+
+    root = pathlib.Path(__file__).resolve().parents[1]
+    bad = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
+    found = [f"{p.relative_to(root)}:{n}" for pattern in ("src/**/*.py", "tests/**/*.py", "benchmarks/**/*.py",
+                                                          "examples/**/*.py", "docs/*.md", "*.md")
+             for p in root.glob(pattern)
+             for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1) if bad.search(line)]
+    assert not found, found

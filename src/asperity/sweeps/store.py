@@ -278,7 +278,7 @@ def _stored_fingerprint(path: str, zarr: bool) -> str | None:
 def store_bytes(spec: SweepSpec) -> int:
     r"""Bytes the results of a sweep take, at least (what the room checks of :func:`open_store` use).
 
-    .. math:: B = N_{sets}\,ig(8\,(n_{curve}\,m + n_{set}) + 4\,cig)
+    .. math:: B = N_{sets}\,\big(8\,(n_{curve}\,m + n_{set}) + 4\,c\big)
 
     with :math:`m` loads (or separations) per curve, :math:`n_{curve}` variables per point of
     a curve and :math:`n_{set}` per set (float64), and :math:`c` = :data:`MESSAGE_CHARS`
