@@ -176,3 +176,29 @@ def test_no_control_characters_in_text_files():
              for p in root.glob(pattern)
              for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1) if bad.search(line)]
     assert not found, found
+
+
+def test_no_control_characters_in_docstrings():
+    """The same in the docstrings as Python reads them: '\\bar' in a non-raw docstring is a
+    backspace and 'ar' (found in jackson_green_law), '\\tau' a tab and 'au'."""
+    import importlib
+    import inspect
+    import pkgutil
+    import re
+
+    bad = re.compile(r"[\x00-\x09\x0b-\x1f\x7f]")
+    found = []
+    for info in pkgutil.walk_packages(asperity.__path__, "asperity.", onerror=lambda name: None):
+        if info.name.endswith("__main__"):
+            continue
+        try:
+            module = importlib.import_module(info.name)
+        except ModuleNotFoundError:  # an optional extra not installed; the sources are checked as text above
+            continue
+        objects = [module, *(v for _, v in inspect.getmembers(module) if getattr(v, "__module__", None) == info.name)]
+        for obj in list(objects):
+            if inspect.isclass(obj):
+                objects += [m for m in vars(obj).values() if inspect.isfunction(m) or isinstance(m, property)]
+        found += [f"{info.name}: {getattr(o, '__qualname__', o)!s:.60}" for o in objects
+                  if isinstance(getattr(o, "__doc__", None), str) and bad.search(o.__doc__)]
+    assert not found, found

@@ -198,7 +198,7 @@ class JacksonGreenLaw:
         return self.params.beta * float(np.sqrt(u / w * jg_area_fit(w, float(self._e_y(np.array([u]))[0]))))
 
     def _friction_breakpoints(self) -> tuple[float, ...]:
-        """Penetrations where the law's radius crosses the friction law's breakpoint radii.
+        r"""Penetrations where the law's radius crosses the friction law's breakpoint radii.
 
         Below the area's switch the radius is Hertz's, :math:`\bar u = (\bar a_k/\beta)^2`; above,
         the law's radius exceeds Hertz's, so the crossing lies in :math:`[\bar u_t, (\bar a_k/\beta)^2]`.
