@@ -12,7 +12,7 @@ the penetration at which an approaching asperity jumps into contact:
 each carries the stable-branch Maugis-Dugdale force of its penetration (Hertz without
 adhesion), solved per asperity by root finding in multiple precision
 (:func:`~asperity.reference.maugis_dugdale_branch.branch_point_offset`), and the integrals over
-``z`` are adaptive Gauss-Kronrod quadrature (:func:`scipy.integrate.quad`, ``epsrel=1e-11``)
+``z`` (the Gaussian density, or any of :mod:`.heights` for the points) are adaptive Gauss-Kronrod quadrature (:func:`scipy.integrate.quad`, ``epsrel=1e-11``)
 in ``s`` with ``u = u_end + s**2``, split at the Hurtado-Kim radii and the sign changes of
 the per-asperity load.  Nothing is tabulated; nothing is shared with the fast path.
 
@@ -90,20 +90,37 @@ def _quad(f, points):
     return total
 
 
-def _integrals(d, asp, u_lo, u_hi=math.inf, names=_NAMES):
-    """``int_{u_lo}^{u_hi} q(u) phi(d + u) du`` for each quantity, in ``s`` with ``u = u_end + s^2``."""
+def _marks(dens):
+    """Heights where a density changes: ``(-6, -3, 0, 3, 6)`` for the Gaussian; else its support
+    edges, unit steps through its bulk and each Gaussian component's centre and +-1, 3, 6 widths
+    (a narrow component of a mixture)."""
+    if dens is None:
+        return [-6.0, -3.0, 0.0, 3.0, 6.0]
+    marks = [*dens.breaks(), *range(math.ceil(max(dens.z_bottom, -12.0)), math.floor(min(dens.z_top, 12.0)) + 1)]
+    components = getattr(dens, "components", None)
+    if components is not None:
+        for m, sd in zip(components[1], components[2], strict=True):
+            marks += [float(m) + k * float(sd) for k in (-6, -3, -1, 0, 1, 3, 6)]
+    return [float(z) for z in marks]
+
+
+def _integrals(d, asp, u_lo, u_hi=math.inf, names=_NAMES, dens=None):
+    """``int_{u_lo}^{u_hi} q(u) phi(d + u) du`` for each quantity, in ``s`` with ``u = u_end + s^2``;
+    ``phi`` the standard Gaussian, or the density ``dens`` (a RefDensity of .heights)."""
     s_lo = math.sqrt(max(u_lo - asp.u_end, 0.0))
-    s_hi = math.sqrt(max(-d, 0.0) + _Z_TAIL - asp.u_end) if math.isinf(u_hi) else math.sqrt(u_hi - asp.u_end)
+    if math.isinf(u_hi):  # truncated where the density is negligible
+        u_hi = max(-d, 0.0) + _Z_TAIL if dens is None else min(dens.z_top, dens.hi) - d
+    s_hi = math.sqrt(max(u_hi - asp.u_end, 0.0))
     if not s_hi > s_lo:
         return dict.fromkeys(names, 0.0)
     z0 = d + asp.u_end
-    extra = [math.sqrt(zk - z0) for zk in (-6.0, -3.0, 0.0, 3.0, 6.0) if zk > z0]
+    extra = [math.sqrt(zk - z0) for zk in _marks(dens) if zk > z0]
     cuts = [math.sqrt(v) for v in asp.v_breaks + asp.v_zeros] + extra
     points = sorted({s_lo, s_hi, *[s for s in cuts if s_lo < s < s_hi]})
+    pdf = (lambda z: math.exp(-0.5 * z * z) / _SQRT2PI) if dens is None else dens.pdf
 
     def weight(s):
-        z = z0 + s * s
-        return 2.0 * s * math.exp(-0.5 * z * z) / _SQRT2PI
+        return 2.0 * s * pdf(z0 + s * s)
 
     return {name: _quad(lambda s, name=name: weight(s) * asp.column(name, s * s), points) for name in names}
 
@@ -120,8 +137,10 @@ def _u_in(asp, u_in):
     return u_in
 
 
-def approach_point(d, alpha, beta, gamma=0.0, *, u_in=0.0, nu=0.3, h_over_b=1.0):
+def approach_point(d, alpha, beta, gamma=0.0, *, u_in=0.0, nu=0.3, h_over_b=1.0, heights=None):
     """Contacts, P, F and area per asperity on approach to ``d``: ``z >= d + u_in`` touch.
+
+    ``heights``: None (Gaussian) or a :class:`~asperity.reference.heights.RefDensity`.
 
     Returns
     -------
@@ -130,12 +149,14 @@ def approach_point(d, alpha, beta, gamma=0.0, *, u_in=0.0, nu=0.3, h_over_b=1.0)
     """
     d = finite("d", d)
     asp = _Asperity(_params(alpha, beta, gamma, nu, h_over_b))
-    return _integrals(d, asp, _u_in(asp, u_in))
+    return _integrals(d, asp, _u_in(asp, u_in), dens=heights)
 
 
-def retract_point(d, d_min, alpha, beta, gamma=0.0, *, u_in=0.0, nu=0.3, h_over_b=1.0):
+def retract_point(d, d_min, alpha, beta, gamma=0.0, *, u_in=0.0, nu=0.3, h_over_b=1.0, heights=None):
     """Contacts, P, F and area per asperity on retraction to ``d >= d_min`` after the closest
     approach ``d_min``: ``z >= max(d + u_end, d_min + u_in)`` touch.
+
+    ``heights``: None (Gaussian) or a :class:`~asperity.reference.heights.RefDensity`.
 
     Returns
     -------
@@ -147,7 +168,7 @@ def retract_point(d, d_min, alpha, beta, gamma=0.0, *, u_in=0.0, nu=0.3, h_over_
         raise ValueError(f"d must be >= d_min, got d={d!r}, d_min={d_min!r}")
     asp = _Asperity(_params(alpha, beta, gamma, nu, h_over_b))
     u_in = _u_in(asp, u_in)
-    return _integrals(d, asp, max(asp.u_end, d_min + u_in - d))
+    return _integrals(d, asp, max(asp.u_end, d_min + u_in - d), dens=heights)
 
 
 def cycle_energy(d_min, d_max, alpha, beta, gamma, *, u_in=0.0, nu=0.3, h_over_b=1.0):
