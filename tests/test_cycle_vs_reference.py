@@ -120,7 +120,8 @@ def test_retraction_with_a_narrow_mixture_component(spec):
 
 @pytest.mark.parametrize("case", ["weibull-0.8", "pearson3-1.2", "empirical"])
 def test_retraction_with_skewed_heights(case):
-    from .heights_cases import fast, reference as reference_heights
+    from .heights_cases import fast
+    from .heights_cases import reference as reference_heights
 
     p, d_min = CASES[1], -0.3
     u_end = AsperityLaw(ModelParameters(*p)).u_end

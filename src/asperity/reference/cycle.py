@@ -12,9 +12,11 @@ the penetration at which an approaching asperity jumps into contact:
 each carries the stable-branch Maugis-Dugdale force of its penetration (Hertz without
 adhesion), solved per asperity by root finding in multiple precision
 (:func:`~asperity.reference.maugis_dugdale_branch.branch_point_offset`), and the integrals over
-``z`` (the Gaussian density, or any of :mod:`.heights` for the points) are adaptive Gauss-Kronrod quadrature (:func:`scipy.integrate.quad`, ``epsrel=1e-11``)
-in ``s`` with ``u = u_end + s**2``, split at the Hurtado-Kim radii and the sign changes of
-the per-asperity load.  Nothing is tabulated; nothing is shared with the fast path.
+``z`` (the Gaussian density, or any of :mod:`.heights` for the points) are adaptive
+Gauss-Kronrod quadrature (:func:`scipy.integrate.quad`, ``epsrel=1e-11``) in ``s`` with
+``u = u_end + s**2``, split at the Hurtado-Kim radii, the sign changes of the per-asperity
+load and where the density changes (a mixture's narrow component).  Nothing is tabulated;
+nothing is shared with the fast path.
 
 The energy dissipated over a cycle ``d_max -> d_min -> d_max`` (:func:`cycle_energy`) is summed
 asperity by asperity: each one that touched dissipates the work of its own force over the part
