@@ -220,3 +220,20 @@ def test_a_bad_number_on_the_first_line_is_no_header(tmp_path, first):
         read_samples(str(path))
     path.write_text("z_m\n" + "\n".join(str(float(x)) for x in np.linspace(-2.0, 2.0, 50)) + "\n")
     assert read_samples(str(path)).size == 50
+
+
+@pytest.mark.parametrize("factor", [1e160, 1e300, 1e-200, 1e-300])
+def test_summit_heights_of_any_magnitude(factor):
+    # A helper's trial: heights x 1e160 overflowed the variance (a NumPy message about negative
+    # bincount elements, four leaked RuntimeWarnings); x 1e-200 underflowed it ("all equal").
+    from asperity.heights import Empirical
+    from asperity.heights.samples import sample_moments
+
+    z = np.random.default_rng(0).gamma(2.5, 1.0, 700)
+    base, scaled = Empirical.from_samples(z), Empirical.from_samples(z * factor)
+    np.testing.assert_allclose(scaled.means, base.means, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(scaled.weights, base.weights, rtol=1e-10, atol=1e-14)
+    assert scaled.sd == pytest.approx(base.sd, rel=1e-12)
+    np.testing.assert_allclose(sample_moments(z * factor), sample_moments(z), rtol=1e-12)
+    with pytest.raises(ValueError, match="equal"):
+        Empirical.from_samples(np.full(30, 3.0 * factor))

@@ -35,7 +35,7 @@ def check_samples(samples, name: str = "samples") -> np.ndarray:
         raise ValueError(f"{name} must be a 1-D array of summit heights, got shape {z.shape}")
     if z.size < MIN_SAMPLES:
         raise ValueError(f"{name} must hold at least {MIN_SAMPLES} summit heights, got {z.size}")
-    if not np.std(z) > 1e-12 * np.max(np.abs(z)):
+    if not np.std(_scaled(z)) > 1e-12:  # relative to the largest |z|: heights of any magnitude
         raise ValueError(f"{name}: all {z.size} summit heights are equal (to rounding); no distribution to fit")
     return z
 
@@ -127,9 +127,17 @@ def write_samples(path, samples, header: str = "z") -> None:
     atomic_write(path, header + "\n" + "".join(f"{x!r}\n" for x in z.tolist()))
 
 
+def _scaled(z) -> np.ndarray:
+    """``z`` over its largest magnitude (a power of 2: exact), so that sums of squares neither
+    overflow (heights of 1e160) nor underflow (1e-200); zeros stay zeros."""
+    top = float(np.max(np.abs(z))) if z.size else 0.0
+    return z if top == 0.0 else np.ldexp(z, -math.frexp(top)[1])
+
+
 def standardise(z) -> np.ndarray:
-    """``(z - mean) / std`` with the population standard deviation (as sigma_s is measured)."""
-    z = np.asarray(z, dtype=float)
+    """``(z - mean) / std`` with the population standard deviation (as sigma_s is measured),
+    computed on the heights scaled to order 1 (any magnitude a float can hold)."""
+    z = _scaled(np.asarray(z, dtype=float))
     return (z - z.mean()) / z.std()
 
 
