@@ -255,3 +255,27 @@ def test_integer_options_take_ascii_integers(value):
 def test_a_range_count_is_an_ascii_integer(count):
     with pytest.raises(UsageError, match="count in start:stop:count must be a positive integer"):
         parse_list(f"1:10:{count}", log=True, name="--P")
+
+
+@pytest.mark.parametrize("command, argv, required", [
+    ("cycle", ["--alpha", "0.02", "--beta", "50", "--dmin", "-1"], True),
+    ("pulloff", ["--alpha", "0.02", "--beta", "50"], True),
+    ("load", ["--alpha", "0.02", "--beta", "50", "--P", "1"], False),
+    ("separation", ["--alpha", "0.02", "--beta", "50", "--d", "1"], False),
+])
+def test_gamma_help_says_what_the_command_does_without_it(capsys, command, argv, required):
+    # A helper's trial: cycle and pulloff said "default 0" and then refused to run without --gamma.
+    from asperity.cli import main
+
+    with pytest.raises(SystemExit):
+        main([command, "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    start = text.index("--gamma GAMMA ")  # the option list, after the usage line
+    line = text[start:text.index("--nu NU", start)]
+    code = main([command, *argv])
+    err = capsys.readouterr().err
+    if required:
+        assert "required here" in line and "default 0" not in line
+        assert code == 2 and "--gamma" in err
+    else:
+        assert "default 0" in line and code == 0, err

@@ -165,12 +165,17 @@ def output_dir(text: str) -> str:
 
 
 # -- argument groups -------------------------------------------------------------------------
-def add_model_arguments(parser: argparse.ArgumentParser) -> None:
-    """The dimensionless model parameters: ``--alpha --beta --gamma --nu --h-over-b``."""
+def add_model_arguments(parser: argparse.ArgumentParser, *, gamma_required: bool = False) -> None:
+    """The dimensionless model parameters: ``--alpha --beta --gamma --nu --h-over-b``
+    (``gamma_required``: the command refuses to run without ``--gamma``, and its help says so
+    instead of the model's default 0)."""
     g = parser.add_argument_group("model parameters (dimensionless), or a physical contact below")
     g.add_argument("--alpha", type=decimal, help=MODEL_HELP["alpha"])
     g.add_argument("--beta", type=decimal, help=MODEL_HELP["beta"])
-    g.add_argument("--gamma", type=decimal, default=None, help=MODEL_HELP["gamma"])
+    gamma_help = MODEL_HELP["gamma"]
+    if gamma_required:
+        gamma_help = gamma_help.replace("; default 0", "; required here (no default)")
+    g.add_argument("--gamma", type=decimal, default=None, help=gamma_help)
     g.add_argument("--nu", type=decimal, default=None, help=_NU_HELP)
     g.add_argument("--h-over-b", dest="h_over_b", type=decimal, default=None, help=MODEL_HELP["h_over_b"])
     add_heights_argument(parser, g)

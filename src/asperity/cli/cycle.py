@@ -48,7 +48,7 @@ def _help(option: str) -> str:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    add_model_arguments(parser)
+    add_model_arguments(parser, gamma_required=True)
     add_contact_arguments(parser)
     g = parser.add_argument_group("cycle (give --dmin or --preload)")
     g.add_argument("--dmin", metavar="D", help=_help("dmin"))
