@@ -159,7 +159,7 @@ def preload_curve(preload, alpha, beta, gamma=0.0, *, d_max=None, u_in=0.0, nu=0
     Parameters
     ----------
     preload : array_like
-        Preloads :math:`P/(NGb^2) > 0`, at most 10^6.
+        Preloads :math:`P/(NGb^2)`, finite and > 0; at most 10^6 of them.
     alpha, beta, gamma : float
         Model parameters (Eqs 7, 16).
     d_max : float, optional

@@ -293,7 +293,7 @@ def compute_preload_curve(ci: CycleIntegrals, preload, *, d_max=None) -> Preload
     ci : CycleIntegrals
         The parameter set's integrals.
     preload : array_like
-        Preloads :math:`P/(NGb^2) > 0`, at most 10^6.
+        Preloads :math:`P/(NGb^2)`, finite and > 0; at most 10^6 of them.
     d_max : float, optional
         Start and end of each cycle (default :math:`10 - \bar u_{end}`).
 
