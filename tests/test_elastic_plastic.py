@@ -263,3 +263,9 @@ def test_nanometre_summits_whose_contacts_never_reach_a_friction_breakpoint():
         ref = reference.jg_separation_point(di, alpha, beta, nu, H)
         for key in ("contacts", "P", "F", "area", "plastic"):
             assert getattr(curve, key)[i] == pytest.approx(ref[key], rel=1e-8), (key, di)
+
+
+def test_law_names_with_underscores_and_capitals():
+    from asperity.elastic_plastic import make_law
+
+    assert type(make_law("Jackson_Green", H_over_E=0.01)) is type(make_law("jackson-green", H_over_E=0.01))

@@ -141,3 +141,21 @@ def test_review_findings_on_specs_and_sample_files(tmp_path):
         read_samples(path)
     path.write_text("height [nm]\n" + "".join(f"{x}\n" for x in range(30)))
     assert read_samples(path).size == 30
+
+
+def test_spelling_of_parameters_as_of_names():
+    # A helper's trial: family names were case-insensitive, their keys not ('SKEW' refused), and
+    # Python's float() let '1_0' (ten) and other scripts' digits through.
+    from asperity.heights import Weibull, parse_heights
+
+    assert parse_heights("Weibull:SKEW=0.5") == parse_heights("weibull:skew=0.5") == Weibull(skew=0.5)
+    for bad in ("weibull:skew=1_0", "weibull:skew=\u0660.\u0665", "weibull:skew=0x1"):
+        with pytest.raises(ValueError, match="skew must be a number"):
+            parse_heights(bad)
+
+
+def test_johnson_kurtosis_range_names_the_skewness_bound():
+    from asperity.heights import Johnson
+
+    with pytest.raises(ValueError, match=r"1 \+ skew\^2"):
+        Johnson(skew=0.5, kurt=31.0)

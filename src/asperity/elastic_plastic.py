@@ -244,7 +244,7 @@ def make_law(name: str, *, H_over_E=None, h_star_over_sigma=None):
     """
     if not isinstance(name, str):
         raise TypeError(f"name (the per-asperity law) must be a string, one of {', '.join(LAWS)}; got {name!r}")
-    key = name.strip().lower()
+    key = name.strip().lower().replace("_", "-")  # 'Jackson_Green' too
     if key not in LAWS:
         raise ValueError(f"name: unknown law {name!r}; known: {', '.join(LAWS)}")
     if key == "elastic":

@@ -170,9 +170,9 @@ def resolve_plasticity(material: Material, plasticity, hardness, size_effect, h_
         with ``h_star``, or a size effect without :math:`H_0` or :math:`h^*`.
     """
     name = "elastic" if plasticity is None else plasticity
-    if not isinstance(name, str) or name.strip().lower() not in LAWS:
+    if not isinstance(name, str) or name.strip().lower().replace("_", "-") not in LAWS:
         raise ValueError(f"plasticity must be a law name, one of {', '.join(LAWS)}, got {plasticity!r}")
-    name = name.strip().lower()
+    name = name.strip().lower().replace("_", "-")
     if h_star is not None:
         h_star = check_scalar_positive(h_star, "h_star", "m", allow_zero=True)
     if size_effect is None:

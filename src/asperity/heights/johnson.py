@@ -82,7 +82,7 @@ class Johnson(HeightDistribution):
 
     def __post_init__(self):
         s = check_scalar_range(self.skew, "skew", -3.0, 3.0, what="Johnson skewness")
-        k = check_scalar_range(self.kurt, "kurt", 1.0, KURT_MAX, what="Johnson kurtosis")
+        k = check_scalar_range(self.kurt, "kurt", 1.0, KURT_MAX, what="Johnson kurtosis, > 1 + skew^2")
         if not k > 1.0 + s * s:
             raise ValueError(f"kurt (Johnson kurtosis) must exceed 1 + skew^2 = {1 + s * s:g} (no distribution "
                              f"has less), got {self.kurt!r}")

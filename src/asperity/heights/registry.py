@@ -22,6 +22,7 @@ Every error lists the valid names or parameters.
 
 from __future__ import annotations
 
+from .._numbers import strict_float
 from .base import HeightDistribution
 from .empirical import Empirical
 from .exponential import Exponential
@@ -155,14 +156,14 @@ def parse_heights(spec) -> HeightDistribution:
     params = {}
     for item in (rest.split(",") if rest.strip() else []):
         k, eq, v = item.partition("=")
-        k = k.strip()
+        k = k.strip().lower()
         if not eq or not k or not v.strip():
             raise ValueError(f"heights: expected key=value in {spec!r}, got {item.strip()!r} "
                              f"(spelling {SPELLINGS[key]})")
         if k in params:
             raise ValueError(f"heights: {k} given twice in {spec!r}")
         try:
-            params[k] = float(v)
+            params[k] = strict_float(v.strip())
         except ValueError:
             raise ValueError(f"heights: {k} must be a number, got {v.strip()!r} in {spec!r}") from None
     if colon and not params:
