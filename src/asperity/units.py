@@ -254,6 +254,8 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
         raise ValueError(f"{name} = {text!r}: one number with its unit (two decimal points, or a number "
                          "directly before '(', are not read)")
     if not re.match(r"[+-]?\s*(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z]))", stripped, re.ASCII | re.IGNORECASE):
+        if re.match(r"[+-]?(?:nan|inf)", stripped, re.IGNORECASE):  # 'nanGPa': NaN glued to its unit
+            raise ValueError(f"{name} = {text!r}: must be a finite number with its unit (no NaN or infinity)")
         example = stripped if re.match(r"[A-Za-z\u00b5\u03bc\u00c5\u212b]", stripped) else "nm"
         raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {example}')")
     if _JUXTAPOSED.search(stripped):
