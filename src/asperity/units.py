@@ -231,6 +231,15 @@ _UNIT_CHARACTERS = frozenset("\u00b5\u03bc\u00c5\u212b\u00b2\u00b3\u00b9\u2070\u
 _NUMBER_TOKEN = re.compile(r"(?<![A-Za-z_])(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
 
 
+def _is_unit(text: str) -> bool:
+    """Whether ``text`` (not empty) is a unit pint knows."""
+    try:
+        unit_registry().parse_units(text)
+    except Exception:  # pint's errors for text that is no unit are of several kinds
+        return False
+    return bool(text.strip())
+
+
 def _check_one_number(stripped: str, text: str, name: str) -> None:
     """Refuse what pint would read as something else: a decimal comma ('0,5J/m^2' is 5 J/m^2
     to pint, '1,5nm' 15 nm), ';', and numbers set side by side ('1 nN 2' is 2 nN)."""
@@ -254,7 +263,8 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
         raise ValueError(f"{name} = {text!r}: one number with its unit (two decimal points, or a number "
                          "directly before '(', are not read)")
     if not re.match(r"[+-]?\s*(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z]))", stripped, re.ASCII | re.IGNORECASE):
-        if re.match(r"[+-]?(?:nan|inf)", stripped, re.IGNORECASE):  # 'nanGPa': NaN glued to its unit
+        glued = re.match(r"[+-]?(?:nan|inf(?:inity)?)", stripped, re.IGNORECASE)
+        if glued and _is_unit(stripped[glued.end():]):  # 'nanGPa': NaN glued to its unit ('nanometer' is not)
             raise ValueError(f"{name} = {text!r}: must be a finite number with its unit (no NaN or infinity)")
         example = stripped if re.match(r"[A-Za-z\u00b5\u03bc\u00c5\u212b]", stripped) else "nm"
         raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {example}')")
