@@ -107,7 +107,8 @@ def test_empirical_of_gaussian_samples_is_close_to_the_gaussian():
     e = Empirical.from_samples(z)
     x = np.linspace(-2.5, 2.5, 11)
     np.testing.assert_allclose(e.pdf(x), stats.norm.pdf(x), atol=0.03)
-    assert e.samples == 20000 and e.components <= 32
+    step = (max(e.means) - min(e.means)) / (e.components - 1)
+    assert e.samples == 20000 and e.components <= 128 and step <= 0.5 * e.sd * (1 + 1e-12)
 
 
 def test_empirical_equality_and_bad_input():
@@ -237,3 +238,29 @@ def test_summit_heights_of_any_magnitude(factor):
     np.testing.assert_allclose(sample_moments(z * factor), sample_moments(z), rtol=1e-12)
     with pytest.raises(ValueError, match="equal"):
         Empirical.from_samples(np.full(30, 3.0 * factor))
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_binned_estimate_is_the_kernel_estimate(seed):
+    # A helper's trial: binned onto centres 1.5 h apart, the estimate differed from the unbinned
+    # kernel estimate the docs describe by -3.3 % to +3.1 % in the bulk and +25 % near the top.
+    # Here the unbinned estimate is the reference's Gaussian mixture of all the shrunk centres.
+    from asperity.heights import Empirical
+    from asperity.heights.samples import standardise
+    from asperity.reference.heights import reference_density
+
+    z = np.random.default_rng(seed).gamma(2.5, 1.0, 700)
+    e = Empirical.from_samples(z)
+    zs = standardise(z)
+    q75, q25 = np.percentile(zs, [75, 25])
+    h = max(0.2, 0.9 * min(1.0, (q75 - q25) / 1.34) * zs.size ** -0.2)
+    ref = reference_density("gauss_mixture", weights=(1.0,) * zs.size,
+                            means=tuple(math.sqrt(1 - h * h) * zs), sds=(h,) * zs.size)
+    x = np.linspace(-2.0, 3.5, 23)
+    expected = np.array([ref.pdf(v) for v in x])
+    bulk, tails = expected > 0.05, expected > 0.02
+    np.testing.assert_allclose(e.pdf(x)[bulk], expected[bulk], rtol=0.01)
+    np.testing.assert_allclose(e.pdf(x)[tails], expected[tails], rtol=0.03)
+    top = float(np.max(zs))  # standardised again by the mixture: about the same place
+    near_top = np.array([top - 0.5, top])
+    np.testing.assert_allclose(e.pdf(near_top), [ref.pdf(v) for v in near_top], rtol=0.05)

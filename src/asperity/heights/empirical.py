@@ -50,8 +50,8 @@ from .samples import check_samples, read_samples, standardise
 
 __all__ = ["Empirical", "COMPONENTS", "MIN_BANDWIDTH"]
 
-#: Number of kernel centres the estimate is binned onto.
-COMPONENTS = 32
+#: Most kernel centres the estimate is binned onto (fewer when centres h/2 apart span the summits).
+COMPONENTS = 128
 #: Smallest kernel width, in sigma_s (narrower kernels resolve sampling noise, not the surface).
 MIN_BANDWIDTH = 0.2
 
@@ -147,7 +147,7 @@ class Empirical(GaussianSum):
             Summit heights, 1-D, finite, at least 20, not all equal.
         components : int
             Largest number of kernel centres :math:`K`, 2 to 256 (fewer, but at least 8, when
-            centres 1.5 bandwidths apart already span the summits).
+            centres half a bandwidth apart already span the summits).
         source : str, optional
             File name to remember (for :attr:`spec`).
 
@@ -166,9 +166,10 @@ class Empirical(GaussianSum):
         q75, q25 = np.percentile(z, [75, 25])
         h = max(MIN_BANDWIDTH, 0.9 * min(1.0, (q75 - q25) / 1.34) * z.size ** -0.2)
         c = math.sqrt(1.0 - h * h) * z
-        # at most COMPONENTS centres, at most 1.5 h apart (the ripple of a binned Gaussian
-        # estimate, ~exp(-2 pi^2 h^2 / step^2), stays below 2e-4), never fewer than 8
-        needed = int(math.ceil((c.max() - c.min()) / (1.5 * h))) + 1
+        # at most COMPONENTS centres, at most h/2 apart (the binning adds the variance step^2/6 <=
+        # h^2/24, and its ripple ~exp(-2 pi^2 h^2 / step^2) is below 1e-30; 1.5 h apart, the
+        # estimate was up to 3 % off the unbinned one in the bulk, found by a review), never fewer than 8
+        needed = int(math.ceil((c.max() - c.min()) / (0.5 * h))) + 1
         components = min(int(components), max(8, needed))
         grid = np.linspace(c.min(), c.max(), components)
         step = grid[1] - grid[0]
