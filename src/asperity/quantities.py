@@ -280,8 +280,10 @@ CYCLE_QUANTITIES = _registry(
              "the asperities' stable branch)", unit="sigma", si_name="d_max_m", si_unit="m",
              si_meaning="separation where the cycle starts and ends"),
     Quantity("preload", r"P_{pre}/NGb^2", "preload: the largest compressive load P/(N G b^2), reached at the "
-             "closest approach", unit="N G b^2", si_name="preload_N", si_unit="N",
-             si_meaning="largest compressive load of the cycle", lo=0.0, log=True),
+             "closest approach (as a result: the force there, negative when a cycle given by d_min never "
+             "turns compressive)", unit="N G b^2", si_name="preload_N", si_unit="N",
+             si_meaning="largest compressive load of the cycle (the force at the closest approach; negative "
+             "when it is still tensile)", lo=0.0, log=True),
     Quantity("stiffness", r"k\sigma/NGb^2", "instrument spring stiffness k sigma/(N G b^2); inf: displacement "
              "control", unit="N G b^2/sigma", si_name="stiffness_N_m", si_unit="N/m",
              si_meaning="stiffness of the instrument's spring (cantilever)", lo=0.0, hi=_INF, hi_inclusive=True,
