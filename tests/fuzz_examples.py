@@ -325,6 +325,12 @@ SKIP = {
                     "asperity.sweeps.store.NetCDFStore", "asperity.sweeps.store.ZarrStore",
                     "asperity.sweeps.store.store_bytes")},
     "asperity.sweeps.store.open_result": "opens a finished sweep file with xarray (tests/test_sweeps.py)",
+    **{name: "an input check of physical_cycle and physical_preload_curve, which are fuzzed with the same "
+             "inputs (tests/test_physical_cycle.py tests the messages)"
+       for name in ("asperity.physical_cycle_inputs.length_input", "asperity.physical_cycle_inputs.cycle_stiffness",
+                    "asperity.physical_cycle_inputs.cycle_u_in",
+                    "asperity.physical_cycle_inputs.check_cycle_separations",
+                    "asperity.physical_cycle_inputs.scaled_error")},
     **{name: "an inner step of the height distributions (moments, quadrature, sums, fits) called by the "
              "distributions and fit_heights on values they checked (those entry points are fuzzed)"
        for name in ("asperity.heights.base.tanh_sinh", "asperity.heights.checks.checked_density",

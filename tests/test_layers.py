@@ -45,7 +45,7 @@ LAYERS = [
                   "bodies", "physical", "physical_description", "physical_groups", "physical_results",
                   "surface", "regimes",
                   "topography",
-                  "plasticity", "physical_cycle", "icha", "persson"}),
+                  "plasticity", "physical_cycle", "physical_cycle_inputs", "icha", "persson"}),
     ("applications", {"fit", "sweeps", "validation", "cycle_plot"}),
     ("front ends", {"studies", "cli", "explorer", "__init__"}),
 ]

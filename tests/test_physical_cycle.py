@@ -191,3 +191,25 @@ def test_a_cycles_warnings_point_at_the_users_line():
         physical_cycle(contact, preload="3000N", n=10)
         plastic.cycle(preload="5uN", n=12)  # no unloading
     assert len(caught) == 5 and {w.filename for w in caught} == {__file__}, [(w.filename, w.message) for w in caught]
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    ({"d_min": -1.0}, "d_min (closest approach) must lie in ["),          # metres: -1 m, not -5e8 sigma_s
+    ({"d_min": "3um"}, "got 3e-06 m"),
+    ({"d_min": "1nm", "d_max": "1m"}, "d_max (start and end of the cycle) must lie in ("),
+    ({}, "give exactly one of d_min"),
+    ({"d_min": "1nm", "preload": "1uN"}, "give exactly one of d_min"),
+    ({"d_min": "0nm", "d": ["1nm", "50nm"]}, "d (separations) must lie in [d_min, d_max] = [0, "),
+])
+def test_separations_are_checked_in_metres(kwargs, words):
+    # A helper's trial: physical_cycle(d_min=-1.0) said "got -499999999.99999994 (separations in
+    # units of sigma_s ...)"; the ranges are now said in metres.
+    from asperity.physical import PhysicalContact, Surface
+    from asperity.physical_cycle import physical_cycle
+
+    contact = PhysicalContact("Au", Surface(2e-9, 100e-9, 2e14, 1e-12), plastic_threshold=1.0)
+    if "d" in kwargs:
+        kwargs = {**kwargs, "d": [float(x[:-2]) * 1e-9 for x in kwargs["d"]]}
+    with pytest.raises(ValueError) as err:
+        physical_cycle(contact, **kwargs)
+    assert words in str(err.value) and "units of sigma_s" not in str(err.value)

@@ -120,6 +120,7 @@ _SUBMODULES = (
     "persson",
     "physical",
     "physical_cycle",
+    "physical_cycle_inputs",
     "physical_groups",
     "physical_results",
     "plasticity",

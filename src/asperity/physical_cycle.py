@@ -24,20 +24,19 @@ References
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ._csv import columns_to_csv, columns_to_dataframe
 from ._json import json_safe
-from ._validation import as_float_array, check_1d, check_finite_result, check_scalar_positive, scalar
+from ._validation import check_1d, check_finite_result, check_scalar_positive
 from ._warnings import frames_to_user
 from .cycle import CycleResult, PreloadCurve, compute_cycle, compute_preload_curve
 from .cycle_integrals import CycleIntegrals
 from .cycle_run import MAX_POINTS
-from .instrument import STIFFNESS_MIN
 from .physical import PhysicalContact, PhysicalCurve, PhysicalPullOff, warn_area_fraction
+from .physical_cycle_inputs import check_cycle_separations, cycle_stiffness, cycle_u_in, length_input, scaled_error
 from .quantities import CYCLE_QUANTITIES
 from .units import to_si
 
@@ -170,51 +169,6 @@ class PhysicalPreloadCurve:
         return columns_to_csv(self.columns(), path_or_buffer)
 
 
-def _length(value, name, required=False):
-    if value is None and required:
-        raise TypeError(f"{name} must be a length (m, or a pint length), got None")
-    return None if value is None else float(scalar(as_float_array(to_si(value, "m", name), name), name))
-
-
-def _stiffness(contact: PhysicalContact, stiffness) -> float:
-    if stiffness is None:
-        return math.inf
-    if not isinstance(stiffness, bool):  # inf (displacement control) in any spelling: 'inf N/m', a Quantity
-        try:
-            raw = to_si(stiffness, "N/m", "stiffness")
-            value = float(raw) if isinstance(raw, float | int | np.floating | np.integer) else None
-        except (TypeError, ValueError):
-            value = None
-        if value is not None and math.isinf(value) and value > 0:
-            return math.inf
-        if value is not None and not value > 0:
-            raise ValueError(f"stiffness (the instrument's spring) must be > 0 N/m, or inf for displacement control, "
-                             f"got {value!r}")
-    k = check_scalar_positive(stiffness, "stiffness", "N/m")
-    with np.errstate(all="ignore"):
-        k_bar = float(np.float64(k) * contact.surface.sigma_s / contact.force_scale)
-    if not STIFFNESS_MIN <= k_bar < math.inf:
-        raise ValueError(f"stiffness = {k:g} N/m is out of range for this contact: k sigma_s/(N G b^2) = {k_bar:g} "
-                         f"must lie in [{STIFFNESS_MIN:g}, inf) (N G b^2 = {contact.force_scale:.6g} N, sigma_s = "
-                         f"{contact.surface.sigma_s:.6g} m)")
-    return k_bar
-
-
-def _check_u_in_m(contact: PhysicalContact, u_in_m: float) -> float:
-    """``u_in`` [m] in [u_end sigma_s, 0], named in metres (the dimensionless check says the same in sigma)."""
-    low = float(contact.model.law.u_end) * contact.surface.sigma_s
-    if not low <= u_in_m <= 0.0:
-        raise ValueError(f"u_in (penetration at which an approaching asperity jumps into contact) must lie in "
-                         f"[{low:.6g}, 0] m for this contact (from the end of the stable branch to first touch), "
-                         f"got {u_in_m:g} m")
-    return u_in_m
-
-
-def _scaled(contact: PhysicalContact, err: ValueError) -> ValueError:
-    return ValueError(f"{err} (separations in units of sigma_s = {contact.surface.sigma_s:.6g} m, forces in "
-                      f"N G b^2 = {contact.force_scale:.6g} N)")
-
-
 def _branch(contact: PhysicalContact, b) -> PhysicalBranch:
     sigma, fs = contact.surface.sigma_s, contact.force_scale
     P, area = b.P * fs, b.area * contact.area_scale
@@ -293,16 +247,18 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
     if not isinstance(contact, PhysicalContact):
         raise ValueError(f"contact must be an asperity.physical.PhysicalContact, got {type(contact).__name__}")
     sigma, fs = contact.surface.sigma_s, contact.force_scale
-    d_min = _length(d_min, "d_min")
-    d_max = _length(d_max, "d_max")
-    u_in_m = _check_u_in_m(contact, _length(u_in, "u_in", required=True))
+    d_min = length_input(d_min, "d_min")
+    d_max = length_input(d_max, "d_max")
+    u_in_m = cycle_u_in(contact, length_input(u_in, "u_in", required=True))
+    check_cycle_separations(contact, d_min, preload is not None, d_max)
     if preload is not None:
         preload = check_scalar_positive(preload, "preload", "N")
         with np.errstate(all="ignore"):
             preload = float(check_finite_result(np.float64(preload) / fs, "preload/(N G b^2)", preload=preload))
-    k = _stiffness(contact, stiffness)
+    k = cycle_stiffness(contact, stiffness)
     if d is not None:
         d = check_1d(to_si(d, "m", "d"), "d")
+        check_cycle_separations(contact, d_min, preload is not None, d_max, d)
         with np.errstate(all="ignore"):
             d = check_finite_result(d / sigma, "d/sigma_s", d=d, sigma_s=sigma)
     try:
@@ -310,7 +266,7 @@ def physical_cycle(contact: PhysicalContact, *, d_min=None, preload=None, d_max=
         res = compute_cycle(ci, d_min=None if d_min is None else d_min / sigma, preload=preload,
                             d_max=None if d_max is None else d_max / sigma, d=d, n=n, stiffness=k)
     except ValueError as err:
-        raise _scaled(contact, err) from None
+        raise scaled_error(contact, err) from None
     po = res.pull_off
     energy = fs * sigma
     approach, retract = _branch(contact, res.approach), _branch(contact, res.retract)
@@ -378,15 +334,15 @@ def physical_preload_curve(contact: PhysicalContact, preload, *, d_max=None, u_i
         raise ValueError(f"preload must hold at most {MAX_POINTS} values, got {P.size}")
     if np.any(P <= 0):
         raise ValueError(f"preload (largest compressive loads) must be > 0 N, got min {P.min():g} N")
-    d_max = _length(d_max, "d_max")
-    u_in_m = _check_u_in_m(contact, _length(u_in, "u_in", required=True))
+    d_max = length_input(d_max, "d_max")
+    u_in_m = cycle_u_in(contact, length_input(u_in, "u_in", required=True))
     try:
         ci = CycleIntegrals(contact.model, u_in_m / sigma)
         with np.errstate(all="ignore"):
             P_bar = check_finite_result(P / fs, "preload/(N G b^2)", preload=P)
         res = compute_preload_curve(ci, P_bar, d_max=None if d_max is None else d_max / sigma)
     except ValueError as err:
-        raise _scaled(contact, err) from None
+        raise scaled_error(contact, err) from None
     energy = fs * sigma
     return PhysicalPreloadCurve(
         preload_N=P, d_min_m=res.d_min * sigma, pull_off_N=res.pull_off * fs, d_pull_off_m=res.d_pull_off * sigma,
