@@ -159,3 +159,10 @@ def test_johnson_kurtosis_range_names_the_skewness_bound():
 
     with pytest.raises(ValueError, match=r"1 \+ skew\^2"):
         Johnson(skew=0.5, kurt=31.0)
+
+
+def test_an_underflowing_parameter_says_so():
+    from asperity.heights import parse_heights
+
+    with pytest.raises(ValueError, match="smallest double"):
+        parse_heights("weibull:skew=1e-400")

@@ -143,3 +143,25 @@ def test_jump_energy_is_exact_for_a_polynomial_force():
     j = Jump(branch="retract", d_from=0.5, d_to=7.25, d_base=1.0, P_from=0.0, P_to=0.0, energy=0.0)
     exact = integrate.quad(lambda x: x**3 - 2 * x - 4.0 * (x - 1.0), 0.5, 7.25)[0]
     assert jump_energy(j, force, 4.0, kinks=(2.0, 3.5)) == pytest.approx(abs(exact), rel=1e-13)
+
+
+def test_jump_energy_with_a_nan_force_is_nan_and_cheap():
+    # A review: a NaN panel never agreed with its halves, and the panels doubled for 40 levels (24 GB).
+    from asperity.instrument import Jump
+
+    calls = []
+
+    def force(x, order):
+        calls.append(x.size)
+        return (np.where(x > 3, np.nan, 1.0),)
+    j = Jump(branch="retract", d_from=0.5, d_to=7.25, d_base=1.0, P_from=0.0, P_to=0.0, energy=0.0)
+    assert math.isnan(jump_energy(j, force, 4.0)) and sum(calls) < 10**4
+
+
+def test_jump_energy_wholly_beyond_the_top():
+    # A review: both ends beyond d_top integrated the spring from d_top (70.125 for 60.125).
+    from asperity.instrument import Jump
+
+    j = Jump(branch="retract", d_from=4.0, d_to=7.25, d_base=1.0, P_from=0.0, P_to=0.0, energy=0.0)
+    exact = abs(integrate.quad(lambda x: -4.0 * (x - 1.0), 4.0, 7.25)[0])
+    assert jump_energy(j, lambda x, o: (np.zeros_like(x),), 4.0, d_top=3.0) == pytest.approx(exact, rel=1e-14)

@@ -30,3 +30,11 @@ def test_legendre_to_chebyshev_interpolates_on_the_panel(n):
 def test_bad_sizes_are_named(f, n):
     with pytest.raises((ValueError, TypeError), match="n"):
         f(n)
+
+
+def test_cached_tables_are_read_only():
+    # A review: scaling a returned table in place changed every later curve.
+    for arrays in (gauss_legendre(16), chebyshev_basis(20), (legendre_to_chebyshev(16),)):
+        for a in arrays:
+            with pytest.raises(ValueError, match="read-only"):
+                a *= 1.01

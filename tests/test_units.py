@@ -199,6 +199,7 @@ def test_superscript_units_are_read(text, unit, value):
     ("1e-320 nm", "m", "below the smallest double in m"), ("(1e-400) nm", "m", "smaller than the smallest double"),
     ("nanometer", "m", "has no number"), ("1 \u00b10.1 nm", "m", "one number with its unit"),
     ("nanGPa", "Pa", "no NaN or infinity"), ("-infnm", "m", "no NaN or infinity"),  # not "e.g. '1 nanGPa'"
+    ("nan\u00b5m", "m", "no NaN or infinity"), ("inf\u00c5", "m", "no NaN or infinity"),
 ])
 def test_second_review_misreadings_are_refused(text, unit, needle):
     with pytest.raises(ValueError, match=re.escape(needle)):

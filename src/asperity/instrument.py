@@ -48,7 +48,7 @@ from .cycle_search import bracketed_roots
 from .quadrature import gauss_legendre
 
 __all__ = ["Jump", "STIFFNESS_MIN", "check_stiffness", "base_displacement", "spring_path", "jump_energy",
-           "JUMP_RTOL", "JUMP_LEVELS"]
+           "JUMP_RTOL", "JUMP_LEVELS", "JUMP_PANELS"]
 
 
 @dataclass(frozen=True)
@@ -301,9 +301,10 @@ def jump_energy(jump: Jump, force, stiffness: float, kinks=(), d_top=math.inf) -
     """
     lo, hi = sorted((jump.d_from, jump.d_to))
     total = 0.0
-    if hi > d_top:  # P = 0 there: int_{d_top}^{hi} -k (x - Z) dx
-        total -= 0.5 * stiffness * ((hi - jump.d_base) ** 2 - (d_top - jump.d_base) ** 2)
-        hi = d_top
+    if hi > d_top:  # P = 0 there: int_{max(lo, d_top)}^{hi} -k (x - Z) dx
+        top = max(lo, d_top)
+        total -= 0.5 * stiffness * ((hi - jump.d_base) ** 2 - (top - jump.d_base) ** 2)
+        hi = top
     if hi > lo:  # the spring's part is linear: exact on any panel
         total -= 0.5 * stiffness * ((hi - jump.d_base) ** 2 - (lo - jump.d_base) ** 2)
         edges = np.unique(np.concatenate([[lo, hi], [x for x in kinks if lo < x < hi]]))
@@ -313,14 +314,16 @@ def jump_energy(jump: Jump, force, stiffness: float, kinks=(), d_top=math.inf) -
     return abs(total)
 
 
-#: Relative tolerance of :func:`jump_energy`'s adaptive quadrature (of the integral of |P|),
-#: and the most halvings of a panel.
-JUMP_RTOL, JUMP_LEVELS = 1e-11, 40
+#: Relative tolerance of :func:`jump_energy`'s adaptive quadrature (of the integral of |P|), the
+#: most halvings of a panel and the most panels refined at once (a bound on the work and memory).
+JUMP_RTOL, JUMP_LEVELS, JUMP_PANELS = 1e-11, 40, 2**14
 
 
 def _adaptive_gauss(f, a, b) -> float:
     r""":math:`\int f` over the panels ``[a_i, b_i]``, each halved until 16-point Gauss-Legendre
-    on it and on its halves agree (vectorised over the panels of each level)."""
+    on it and on its halves agree (vectorised over the panels of each level).  Values that are
+    not finite are the result (NaN or infinity) at once: a review found a NaN force doubling
+    the panels to 24 GB; past :data:`JUMP_PANELS` panels the rest are kept as they are."""
     x, w = gauss_legendre(16)
 
     def gl(lo, hi):
@@ -329,13 +332,16 @@ def _adaptive_gauss(f, a, b) -> float:
         return (hi - lo) * (values @ w), (hi - lo) * (np.abs(values) @ w)
 
     coarse, scale = gl(a, b)
+    if not np.all(np.isfinite(coarse)):
+        return float(np.sum(coarse))  # NaN or infinity, which no refinement removes
     scale, total = float(np.sum(scale)), 0.0
     for level in range(JUMP_LEVELS):
         m = 0.5 * (a + b)
         left, right = gl(a, m)[0], gl(m, b)[0]
         fine = left + right
         done = np.abs(fine - coarse) <= JUMP_RTOL * max(scale, 1e-300) * (b - a) / max(float(np.sum(b - a)), 1e-300)
-        if level == JUMP_LEVELS - 1:
+        done |= ~np.isfinite(fine)
+        if level == JUMP_LEVELS - 1 or 2 * np.count_nonzero(~done) > JUMP_PANELS:
             done[:] = True
         total += float(np.sum(fine[done]))
         if np.all(done):

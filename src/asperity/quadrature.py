@@ -43,18 +43,26 @@ MAX_NODES_PER_PANEL, MAX_PANELS = 1000, 10**6
 
 
 def gauss_legendre(n: int):
-    """Gauss-Legendre nodes and weights on [0, 1] (``n`` nodes, 1 <= n <= 1000); cached."""
+    """Gauss-Legendre nodes and weights on [0, 1] (``n`` nodes, 1 <= n <= 1000); cached, read-only."""
     return _gauss_legendre(check_integer(n, "n", 1, MAX_NODES_PER_PANEL))
+
+
+def _frozen(*arrays):
+    """The arrays made read-only: they are cached and shared by every caller (a review changed
+    later results by scaling one in place)."""
+    for a in arrays:
+        a.flags.writeable = False
+    return arrays
 
 
 @functools.lru_cache(maxsize=8)
 def _gauss_legendre(n: int):
     x, w = np.polynomial.legendre.leggauss(n)
-    return 0.5 * (x + 1.0), 0.5 * w
+    return _frozen(0.5 * (x + 1.0), 0.5 * w)
 
 
 def chebyshev_basis(n: int):
-    """First-kind Chebyshev points on [-1, 1] and the matrices of their series; cached.
+    """First-kind Chebyshev points on [-1, 1] and the matrices of their series; cached, read-only.
 
     Parameters
     ----------
@@ -91,12 +99,13 @@ def _chebyshev_basis(n: int):
             d[k - 1] = d[k + 1] + 2 * k * c[k]
         d[0] *= 0.5
         D[:, j] = d[:n]
-    return x, T, D
+    return _frozen(x, T, D)
 
 
 def legendre_to_chebyshev(n: int):
     """Matrix taking values at the ``n`` Gauss-Legendre nodes of [0, 1] to the Chebyshev
-    coefficients in :math:`2x - 1` of the polynomial of degree ``n - 1`` through them; cached.
+    coefficients in :math:`2x - 1` of the polynomial of degree ``n - 1`` through them; cached,
+    read-only.
 
     Parameters
     ----------
@@ -113,7 +122,7 @@ def legendre_to_chebyshev(n: int):
 @functools.lru_cache(maxsize=4)
 def _legendre_to_chebyshev(n: int):
     x, _ = _gauss_legendre(n)
-    return np.linalg.inv(np.cos(np.outer(np.arccos(2.0 * x - 1.0), np.arange(n))))
+    return _frozen(np.linalg.inv(np.cos(np.outer(np.arccos(2.0 * x - 1.0), np.arange(n)))))[0]
 
 
 def panel_edges(start, stop, first, breakpoints=(), lo_clip=None, growth=GROWTH):

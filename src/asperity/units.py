@@ -262,7 +262,8 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
     if re.search(r"\d*\.\d*\.", stripped) or re.search(r"[\d.)]\s*\(", stripped):
         raise ValueError(f"{name} = {text!r}: one number with its unit (two decimal points, or a number "
                          "directly before '(', are not read)")
-    if not re.match(r"[+-]?\s*(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z]))", stripped, re.ASCII | re.IGNORECASE):
+    if not re.match(r"[+-]?\s*(?:\d|\.\d|\(|(?:nan|inf(?:inity)?)(?![A-Za-z\u00b5\u03bc\u00c5\u212b]))", stripped,
+                    re.ASCII | re.IGNORECASE):
         glued = re.match(r"[+-]?(?:nan|inf(?:inity)?)", stripped, re.IGNORECASE)
         if glued and _is_unit(stripped[glued.end():]):  # 'nanGPa': NaN glued to its unit ('nanometer' is not)
             raise ValueError(f"{name} = {text!r}: must be a finite number with its unit (no NaN or infinity)")

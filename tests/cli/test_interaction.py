@@ -73,3 +73,8 @@ def test_refused_with_one_line(capsys, argv, words):
 def test_only_curve_commands_take_it(capsys):
     code, out, err = run(capsys, "pulloff", *DIMLESS, "--gamma", "0.01", "--interaction", "cgp2008:k=0.1")
     assert code == 2 and out == "" and "--interaction" in err
+
+
+def test_an_underflowing_compliance_says_so(capsys):
+    code, out, err = run(capsys, "load", *DIMLESS, "--P", "1", "--interaction", "cgp2008:k=1e-400")
+    assert code == 2 and "smaller than the smallest double" in err

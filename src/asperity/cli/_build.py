@@ -65,10 +65,11 @@ def _number(text, name: str):
         return None
     try:
         return strict_float(text)
-    except ValueError:
+    except ValueError as err:
         shown = repr(text) if len(text) <= 60 else repr(text[:60]) + "..."
+        why = "" if str(err).startswith("could not convert") else f" ({err})"  # an underflow says so
         raise UsageError(f"{name}: expected a number (dimensionless, without a physical contact), "
-                         f"got {shown}") from None
+                         f"got {shown}{why}") from None
 
 
 def model_from_args(args):

@@ -164,8 +164,9 @@ def parse_heights(spec) -> HeightDistribution:
             raise ValueError(f"heights: {k} given twice in {spec!r}")
         try:
             params[k] = strict_float(v.strip())
-        except ValueError:
-            raise ValueError(f"heights: {k} must be a number, got {v.strip()!r} in {spec!r}") from None
+        except ValueError as err:
+            why = "" if str(err).startswith("could not convert") else f": {err}"  # an underflow says so
+            raise ValueError(f"heights: {k} must be a number, got {v.strip()!r} in {spec!r}{why}") from None
     if colon and not params:
         if DISTRIBUTIONS[key].parameters:
             raise ValueError(f"heights: {key} needs its parameters: {SPELLINGS[key]}")
