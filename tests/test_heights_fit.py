@@ -108,7 +108,7 @@ def test_empirical_of_gaussian_samples_is_close_to_the_gaussian():
     x = np.linspace(-2.5, 2.5, 11)
     np.testing.assert_allclose(e.pdf(x), stats.norm.pdf(x), atol=0.03)
     step = (max(e.means) - min(e.means)) / (e.components - 1)
-    assert e.samples == 20000 and e.components <= 128 and step <= 0.8 * e.sd
+    assert e.samples == 20000 and e.components <= 128 and step <= 1.4 * e.sd
 
 
 def test_empirical_equality_and_bad_input():
@@ -240,7 +240,7 @@ def test_summit_heights_of_any_magnitude(factor):
         Empirical.from_samples(np.full(30, 3.0 * factor))
 
 
-@pytest.mark.parametrize("seed", [0, 1])
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
 def test_binned_estimate_is_the_kernel_estimate(seed):
     # A helper's trial: binned onto centres 1.5 h apart, the estimate differed from the unbinned
     # kernel estimate the docs describe by -3.3 % to +3.1 % in the bulk and +25 % near the top.
@@ -259,8 +259,12 @@ def test_binned_estimate_is_the_kernel_estimate(seed):
     x = np.linspace(-2.0, 3.5, 23)
     expected = np.array([ref.pdf(v) for v in x])
     bulk, tails = expected > 0.05, expected > 0.02
-    np.testing.assert_allclose(e.pdf(x)[bulk], expected[bulk], rtol=0.01)
-    np.testing.assert_allclose(e.pdf(x)[tails], expected[tails], rtol=0.02)
-    top = float(np.max(zs))  # standardised again by the mixture: about the same place
-    near_top = np.array([top - 0.5, top])
-    np.testing.assert_allclose(e.pdf(near_top), [ref.pdf(v) for v in near_top], rtol=0.08)  # was 25 % off
+    np.testing.assert_allclose(e.pdf(x)[bulk], expected[bulk], rtol=0.025)  # 1.5 h, uncorrected: 5.9 %
+    np.testing.assert_allclose(e.pdf(x)[tails], expected[tails], rtol=0.03)
+    # what the model integrates, the GW moments, up to the highest summits (old: F0 -3.6 % at d = 3,
+    # F1.5 -9 % at d = 4 for seed 0)
+    from asperity.reference.heights import gw_moment_ref
+
+    for d in (1.0, 2.0, 3.0, 4.0):
+        for n in (0.0, 1.5):
+            assert float(e.moment(d, n)) == pytest.approx(gw_moment_ref(ref, d, n), rel=0.015), (d, n)
