@@ -91,7 +91,7 @@ class Empirical(GaussianSum):
     >>> [abs(round(x, 12)) for x in e.stats()[:2]]   # mean and variance
     [0.0, 1.0]
     >>> step = (max(e.means) - min(e.means)) / (e.components - 1)
-    >>> bool(step <= 1.4 * e.sd), e.components <= COMPONENTS, e.spec is None   # 1.25 h apart, e.sd >= 0.86 h
+    >>> bool(step <= 1.46 * e.sd), e.components <= COMPONENTS, e.spec is None   # 1.25 h apart, e.sd >= 0.86 h
     (True, True, True)
     """
 
