@@ -211,7 +211,8 @@ def test_registry_and_make_law():
     (lambda: JacksonGreenLaw("params", 0.01), r"params must be ModelParameters"),
     (lambda: critical_penetration(0.01, 0.3, -1.0), r"H_over_E must be > 0"),
     (lambda: plastic_fraction([0.0], 0.0), r"u_c must be > 0"),
-    (lambda: plastic_fraction([0.0], 1.0, heights="gauss"), r"heights must be a HeightDistribution"),
+    (lambda: plastic_fraction([0.0], 1.0, heights=0.5), r"heights must be a HeightDistribution"),
+    (lambda: plastic_fraction([0.0], 1.0, heights="gauss"), r"unknown distribution 'gauss'"),
 ])
 def test_bad_input(call, match):
     with pytest.raises(ValueError, match=match):

@@ -118,12 +118,15 @@ def test_model_functions_take_any_distribution_and_refuse_others():
     c = asperity.load_curve([1.0, 10.0], 0.01, 1000.0, 1e-3, heights=w)
     assert c.parameters["heights"] == "weibull:skew=0.4"
     assert asperity.Model(0.01, 1000.0, heights=w).heights is w
-    for call in (lambda: asperity.load_curve([1.0], 0.01, 1000.0, heights="weibull:skew=0.4"),
+    for call in (lambda: asperity.load_curve([1.0], 0.01, 1000.0, heights=3.0),
                  lambda: asperity.pull_off(0.01, 1000.0, 1e-3, heights=None),
                  lambda: asperity.contact_fraction(0.0, 0.01, 1000.0, heights=object()),
-                 lambda: PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), heights="gaussian")):
+                 lambda: PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), heights=["gaussian"])):
         with pytest.raises(ValueError, match="heights must be a HeightDistribution"):
             call()
+    # a spec string is read as the command line reads it (test_every_curve_function_takes_a_spec_string)
+    with pytest.raises(ValueError, match="unknown distribution"):
+        PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), heights="gauss")
 
 
 def test_review_findings_on_specs_and_sample_files(tmp_path):
@@ -166,3 +169,25 @@ def test_an_underflowing_parameter_says_so():
 
     with pytest.raises(ValueError, match="smallest double"):
         parse_heights("weibull:skew=1e-400")
+
+
+def test_every_curve_function_takes_a_spec_string():
+    # A newcomer's trial: docs/heights.md says every curve function takes heights=, and
+    # heights="exponential" was refused.
+    import numpy as np
+
+    import asperity
+    from asperity.heights import parse_heights
+    from asperity.physical import PhysicalContact, Surface
+
+    spec = "weibull:skew=0.5"
+    obj = parse_heights(spec)
+    np.testing.assert_array_equal(asperity.load_curve([1.0, 10.0], 0.01, 1000, heights=spec).d,
+                                  asperity.load_curve([1.0, 10.0], 0.01, 1000, heights=obj).d)
+    assert asperity.pull_off(0.003, 1000, 1e-3, heights=spec) == asperity.pull_off(0.003, 1000, 1e-3, heights=obj)
+    assert asperity.Model(0.01, 1000, heights=spec).heights == obj
+    assert PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), heights=spec).heights == obj
+    assert asperity.cycle(0.02, 50, 0.02, preload=10.0, n=20, heights=spec).energy == \
+        asperity.cycle(0.02, 50, 0.02, preload=10.0, n=20, heights=obj).energy
+    with pytest.raises(ValueError, match="unknown distribution"):
+        asperity.load_curve([1.0], 0.01, 1000, heights="weibul")

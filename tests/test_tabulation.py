@@ -40,7 +40,8 @@ def test_law_and_heights_are_checked():
     with pytest.raises(ValueError, match="built for"):
         Tabulation(P, 0.0, 1.0, law=AsperityLaw(ModelParameters(0.01, 1000.0)))
     with pytest.raises(ValueError, match="heights"):
-        Tabulation(P, 0.0, 1.0, heights="gaussian")
+        Tabulation(P, 0.0, 1.0, heights=object())
+    assert Tabulation(P, 0.0, 1.0, heights="gaussian").heights == GAUSSIAN  # a spec string
     assert Tabulation(P, 0.0, 1.0, GAUSSIAN, law=AsperityLaw(P)).law.params == P
 
 

@@ -69,7 +69,7 @@ from ._validation import (
     ufunc_result,
 )
 from .asperity_law import AsperityLaw, ModelParameters
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .jackson_green import jg_yield_coefficient
 from .jackson_green_law import JacksonGreen, JacksonGreenLaw
 from .nix_gao import ng_interference
@@ -188,8 +188,7 @@ def plastic_fraction(d, u_c, heights: HeightDistribution = GAUSSIAN):
     d = as_float_array(d, "d", allow_empty=True)
     u_c = check_positive(u_c, "u_c")
     check_broadcast(d=d, u_c=u_c)
-    if not isinstance(heights, HeightDistribution):
-        raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
+    heights = check_heights(heights)
     with np.errstate(over="ignore"):
         z = d + u_c  # d + u_c past 1e308 is above every height: sf = 0
     return ufunc_result(np.asarray(heights.sf(np.where(np.isfinite(z), z, np.finfo(float).max)), dtype=float))

@@ -50,7 +50,7 @@ def _one_set(d, alpha, beta, gamma, nu, h_over_b, friction, heights):
     """The four integrals at separations ``d`` for one parameter set (checked by ModelParameters)."""
     kwargs = {} if friction is None else {"friction": friction}
     params = ModelParameters(alpha, beta, gamma, nu, h_over_b, **kwargs)
-    check_heights(heights)
+    heights = check_heights(heights)
     law = check_law(None, params)
     d = check_separation(d, d_max=D_MAX - law.u_end)
     tab = Tabulation(params, float(d.min()), float(d.max()), heights, law=law)

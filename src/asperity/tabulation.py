@@ -21,7 +21,7 @@ import numpy as np
 from ._validation import as_float_array, check_bool, check_scalar_real, check_text
 from .asperity_law import U_END_LIMIT, ContactLaw, ModelParameters, check_law, check_parameters
 from .height_sums import HeightSums
-from .heights import GAUSSIAN, HeightDistribution
+from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .quadrature import NODES_PER_PANEL, composite_nodes, gauss_legendre, panel_edges
 
 __all__ = ["D_MIN", "D_MAX", "COLUMNS", "Tabulation", "check_separation", "check_tabulation"]
@@ -93,8 +93,7 @@ class Tabulation:
 
     def __init__(self, params: ModelParameters, d_min: float, d_max: float,
                  heights: HeightDistribution = GAUSSIAN, law: ContactLaw | None = None):
-        if not isinstance(heights, HeightDistribution):
-            raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN)")
+        heights = check_heights(heights)
         self.params = check_parameters(params)
         self.heights = heights
         self.law = check_law(law, params)

@@ -244,10 +244,16 @@ class HeightDistribution(abc.ABC):
 
 
 def check_heights(heights) -> HeightDistribution:
-    """``heights`` if it is a :class:`HeightDistribution`, else a ValueError saying how to get one."""
+    """``heights`` if it is a :class:`HeightDistribution`; a spec string (``'weibull:skew=0.5'``,
+    ``'empirical:FILE'``, as the command line's ``--heights``) read by
+    :func:`asperity.heights.parse_heights`; else a ValueError saying how to get one."""
+    if isinstance(heights, str):
+        from .registry import parse_heights
+
+        return parse_heights(heights)
     if not isinstance(heights, HeightDistribution):
         raise ValueError("heights must be a HeightDistribution (e.g. asperity.GAUSSIAN, or "
-                         f"asperity.heights.parse_heights('weibull:skew=0.5')), got {heights!r}")
+                         f"asperity.heights.parse_heights('weibull:skew=0.5')) or such a spec string, got {heights!r}")
     return heights
 
 
