@@ -131,8 +131,9 @@ def main(argv=None):
     rows = ["load_N,R_m,yielded_share_plain,yielded_share_size_effect,mu_plain,mu_size_effect"]
     for R, g in gold.items():
         for i, P in enumerate(GOLD_LOADS):
-            rows.append(f"{P!r},{R!r},{share(g['plain_curve'])[i]!r},{share(g['sized_curve'])[i]!r},"
-                        f"{g['plain_curve'].mu[i]!r},{g['sized_curve'].mu[i]!r}")
+            values = (P, R, share(g["plain_curve"])[i], share(g["sized_curve"])[i], g["plain_curve"].mu[i],
+                      g["sized_curve"].mu[i])
+            rows.append(",".join(repr(float(v)) for v in values))  # plain numbers (NumPy 2 reprs np.float64(...))
     (out / "plasticity.csv").write_text("\n".join(rows) + "\n", encoding="utf-8")
     try:
         figure(disks, gold, out / "plasticity.png")

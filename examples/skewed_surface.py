@@ -99,8 +99,8 @@ def main(argv=None):
 
 
 def _write_csv(path, loads, mu_gauss, mu_measured):
-    lines = ["P_N,mu_gaussian,mu_measured"] + [f"{p!r},{a!r},{b!r}" for p, a, b in zip(loads, mu_gauss, mu_measured,
-                                                                                        strict=True)]
+    lines = ["P_N,mu_gaussian,mu_measured"] + [f"{float(p)!r},{float(a)!r},{float(b)!r}"
+                                                for p, a, b in zip(loads, mu_gauss, mu_measured, strict=True)]
     path.write_text("\n".join(lines) + "\n")
 
 
