@@ -229,8 +229,9 @@ def nayak_summit_sigma(rms, alpha_n) -> float:
     rms : float, pint.Quantity or str
         Rms roughness :math:`\sigma = \sqrt{m_0}` of all surface heights (m), > 0.
     alpha_n : float
-        Nayak's bandwidth parameter :math:`\alpha_N = m_0 m_4/m_2^2`, >= 1 (its least value
-        for any surface); the relation is reliable for :math:`\alpha_N \gtrsim 5`.
+        Nayak's bandwidth parameter :math:`\alpha_N = m_0 m_4/m_2^2` of profile moments, >= 1
+        (its least value for any profile; an isotropic surface has :math:`\alpha_N \ge 1.5`);
+        the relation is reliable for :math:`\alpha_N \gtrsim 5`.
 
     Returns
     -------

@@ -98,7 +98,7 @@ def _out(x):
 
 
 def bandwidth_alpha(m0, m2, m4):
-    r"""Nayak's bandwidth parameter :math:`\alpha_N = m_0 m_4 / m_2^2` (>= 1 for any surface).
+    r"""Nayak's bandwidth :math:`\alpha_N = m_0 m_4 / m_2^2` (>= 1 for a profile, >= 1.5 for an isotropic map).
 
     .. math:: \alpha_N = \frac{m_0\,m_4}{m_2^2}
 
