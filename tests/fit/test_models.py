@@ -161,6 +161,8 @@ def test_gw_with_other_heights_predicts_the_library():
     with pytest.raises(ValueError, match="^heights: a physical fit takes the contact's summit heights"):
         GWFit(contact=contact, heights=h)
     with pytest.raises((TypeError, ValueError), match="^heights must be a HeightDistribution"):
+        GWFit(heights=3.0)
+    with pytest.raises(ValueError, match="missing parameter"):  # a spec string is read, as on the command line
         GWFit(heights="weibull")
 
 

@@ -54,30 +54,36 @@ def test_elliptic_bump_uses_mean_curvature():
     assert 1 / p.R == pytest.approx((1 / rx + 1 / ry) / 2, rel=1e-9)
 
 
-def _regional_maxima_by_flood_fill(h):
-    """Regional maxima from the definition: flood each plateau of equal heights (8 neighbours);
-    it is a summit if no point next to it is higher and it does not reach the border."""
+def _regional_maxima_by_flood_fill(h, periodic=False):
+    """Regional maxima from the definition: flood each plateau of equal heights (8 neighbours,
+    wrapping round a periodic map); it is a summit if no point next to it is higher and, on a
+    free map, it does not reach the border.  Returns the first point of each, in row order."""
     n, m = h.shape
     seen = np.zeros(h.shape, dtype=bool)
-    count = 0
-    for i in range(1, n - 1):
-        for j in range(1, m - 1):
+    found = []
+    for i in range(n) if periodic else range(1, n - 1):
+        for j in range(m) if periodic else range(1, m - 1):
             if seen[i, j]:
                 continue
-            stack, ok = [(i, j)], True
+            stack, plateau, ok = [(i, j)], [], True
             seen[i, j] = True
             while stack:
                 a, b = stack.pop()
-                ok &= 0 < a < n - 1 and 0 < b < m - 1
-                for x in range(max(a - 1, 0), min(a + 2, n)):
-                    for y in range(max(b - 1, 0), min(b + 2, m)):
+                plateau.append((a, b))
+                ok &= periodic or (0 < a < n - 1 and 0 < b < m - 1)
+                for x in range(a - 1, a + 2):
+                    for y in range(b - 1, b + 2):
+                        if not periodic and not (0 <= x < n and 0 <= y < m):
+                            continue
+                        x, y = x % n, y % m
                         if h[x, y] > h[a, b]:
                             ok = False
                         elif h[x, y] == h[a, b] and not seen[x, y]:
                             seen[x, y] = True
                             stack.append((x, y))
-            count += ok
-    return count
+            if ok:
+                found.append(min(plateau))
+    return sorted(found)
 
 
 @pytest.mark.parametrize("step", [0.0, 0.3, 1.0])
@@ -88,7 +94,12 @@ def test_quantized_maps_count_each_regional_maximum_once(step):
     g = ndimage.gaussian_filter(np.random.default_rng(0).normal(size=(120, 100)), 3)
     h = 3 * g / g.std()
     h = np.round(h / step) * step if step else h
-    assert local_maxima_2d(h).sum() == _regional_maxima_by_flood_fill(h)
+    assert [(i + 1, j + 1) for i, j in np.argwhere(local_maxima_2d(h))] == _regional_maxima_by_flood_fill(h)
+    g = ndimage.gaussian_filter(np.random.default_rng(1).normal(size=(90, 70)), 3, mode="wrap")
+    h = 3 * g / g.std()
+    h = np.round(h / step) * step if step else h
+    assert [tuple(p) for p in np.argwhere(local_maxima_2d(h, periodic=True))] == \
+        _regional_maxima_by_flood_fill(h, periodic=True)
 
 
 def test_l_shaped_plateau_once_and_a_shoulder_never():

@@ -149,8 +149,8 @@ def map_summits(heights, pixel_size, *, periodic: bool, radius: str = "geometric
     dx, dy = (check_scalar_positive(p, "pixel_size", "m") for p in pixel_size)
     h = h - h.mean()
     nx, ny = h.shape
-    padded = np.pad(h, 1, mode="wrap")   # on a free map the border rows never hold a summit
-    peak = local_maxima_2d(padded if periodic else h)
+    padded = np.pad(h, 1, mode="wrap")   # for the curvature stencils; a free map's border holds no summit
+    peak = local_maxima_2d(h, periodic=True) if periodic else local_maxima_2d(h)
     i, j = np.nonzero(peak)
     if not periodic:
         i, j = i + 1, j + 1
@@ -158,6 +158,11 @@ def map_summits(heights, pixel_size, *, periodic: bool, radius: str = "geometric
         raise ValueError("the map has no summit (no local maximum)")
     hxx, hyy, hxy = _second_derivatives(padded, i + 1, j + 1, dx, dy)
     mean = -(hxx + hyy) / 2                       # > 0 at a strict grid maximum
+    cap = mean > 0  # a plateau's point can be flat both ways (one wrapping round a periodic map)
+    if not np.all(cap):
+        i, j, hxx, hyy, hxy, mean = i[cap], j[cap], hxx[cap], hyy[cap], hxy[cap], mean[cap]
+        if i.size == 0:
+            raise ValueError("the map has no summit with a positive curvature (only flat plateaus)")
     gauss = hxx * hyy - hxy * hxy
     if radius == "mean":
         R = 1.0 / mean

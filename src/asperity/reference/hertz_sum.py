@@ -2,9 +2,11 @@
 
 Written from the definitions only (imports nothing from asperity):
 
-* a summit is a grid point higher than its four 'forward' neighbours (+x, +y and the two
-  diagonals ahead in x) and at least as high as the four 'backward' ones; on a periodic
-  map the neighbours wrap, on a free map the border holds no summit;
+* a summit is a regional maximum: a plateau (the grid points of one height connected
+  through their 8 neighbours, often one point) none of whose neighbours is higher, taken at
+  its first point in row order; on a periodic map the neighbours wrap, on a free map a
+  plateau that reaches the border is no summit, nor is a point whose mean curvature is not
+  positive (a plateau wrapping round a periodic map);
 * its height is measured from the mean of the map, its curvatures from central
   differences; radius ``'mean'``: ``1/(-(hxx + hyy)/2)``, ``'geometric'``:
   ``(hxx*hyy - hxy**2)**-0.5`` (the mean radius where that is not positive);
@@ -34,21 +36,40 @@ def summits(h, dx, dy, periodic, radius="geometric"):
             return h[i % nx][j % ny]
         return h[i][j]
 
-    rng_i = range(nx) if periodic else range(1, nx - 1)
-    rng_j = range(ny) if periodic else range(1, ny - 1)
-    for i in rng_i:
-        for j in rng_j:
-            c = h[i][j]
-            ok = True
-            for di, dj in ((1, -1), (1, 0), (1, 1), (0, 1)):
-                if not (c > at(i + di, j + dj) and c >= at(i - di, j - dj)):
-                    ok = False
-            if not ok:
+    seen = [[False] * ny for _ in range(nx)]
+    for i0 in range(nx):
+        for j0 in range(ny):
+            if seen[i0][j0]:
                 continue
+            seen[i0][j0] = True
+            stack, plateau, ok = [(i0, j0)], [], True
+            while stack:  # flood the plateau of (i0, j0)
+                a, b = stack.pop()
+                plateau.append((a, b))
+                for da in (-1, 0, 1):
+                    for db in (-1, 0, 1):
+                        x, y = a + da, b + db
+                        if (da, db) == (0, 0):
+                            continue
+                        if not periodic and not (0 <= x < nx and 0 <= y < ny):
+                            ok = False  # a point of the plateau on the border
+                            continue
+                        x, y = x % nx, y % ny
+                        if h[x][y] > h[a][b]:
+                            ok = False
+                        elif h[x][y] == h[a][b] and not seen[x][y]:
+                            seen[x][y] = True
+                            stack.append((x, y))
+            if not ok or len(plateau) == nx * ny:  # the whole map one plateau: nothing stands out
+                continue
+            i, j = min(plateau)
+            c = h[i][j]
             hxx = (at(i + 1, j) - 2 * c + at(i - 1, j)) / dx**2
             hyy = (at(i, j + 1) - 2 * c + at(i, j - 1)) / dy**2
             hxy = (at(i + 1, j + 1) - at(i + 1, j - 1) - at(i - 1, j + 1) + at(i - 1, j - 1)) / (4 * dx * dy)
             kappa = -(hxx + hyy) / 2
+            if not kappa > 0:  # a plateau's point flat both ways is no cap
+                continue
             gauss = hxx * hyy - hxy * hxy
             R = 1 / math.sqrt(gauss) if radius == "geometric" and gauss > 0 else 1 / kappa
             out.append((i * dx, j * dy, c - mean, R))

@@ -49,14 +49,15 @@ def _grid(h, ndim: int, name: str = "h") -> np.ndarray:
     return h
 
 
-def local_maxima_2d(h) -> np.ndarray:
-    r"""Interior regional maxima of a height map (8 neighbours), a plateau counted once.
+def local_maxima_2d(h, periodic: bool = False) -> np.ndarray:
+    r"""Regional maxima of a height map (8 neighbours), a plateau counted once.
 
     A point is a summit if no neighbour is higher and none is equal (a strict maximum),
     or, for a plateau (a connected set of equal heights, 8-connected), once at its first
-    point in row order if no point next to it is higher and it does not reach the border.
-    A shoulder (a plateau next to a higher point) is no summit.  The border rows and
-    columns are never summits.
+    point in row order if no point next to it is higher (and, on a free map, it does not
+    reach the border; a constant periodic map has none).  A shoulder (a plateau next to a
+    higher point) is no summit.  On a free map the border rows and columns are never
+    summits; a periodic map wraps round.
 
     .. math::
 
@@ -67,11 +68,13 @@ def local_maxima_2d(h) -> np.ndarray:
     ----------
     h : array_like
         Heights, shape ``(nx, ny)`` with nx, ny >= 3, finite.
+    periodic : bool
+        Whether the map repeats (neighbours and plateaus wrap round its edges).
 
     Returns
     -------
     ndarray of bool
-        Shape ``(nx-2, ny-2)``: True at the interior summits.
+        Shape ``(nx-2, ny-2)``: True at the interior summits; periodic: ``(nx, ny)``.
 
     Notes
     -----
@@ -81,7 +84,9 @@ def local_maxima_2d(h) -> np.ndarray:
     1 nm steps has 586 regional maxima).
     """
     h = _grid(h, 2)
-    return _regional_maxima(h, [(1, -1), (1, 0), (1, 1), (0, 1)])
+    if not isinstance(periodic, bool | np.bool_):
+        raise TypeError(f"periodic must be True or False, got {periodic!r}")
+    return _regional_maxima(h, [(1, -1), (1, 0), (1, 1), (0, 1)], bool(periodic))
 
 
 def local_maxima_1d(h) -> np.ndarray:
@@ -101,46 +106,66 @@ def local_maxima_1d(h) -> np.ndarray:
         Shape ``(n-2,)``: True at the interior peaks.
     """
     h = _grid(h, 1)
-    return _regional_maxima(h, [(1,)])
+    return _regional_maxima(h, [(1,)], False)
 
 
-def _regional_maxima(h, forward) -> np.ndarray:
-    """The regional maxima of ``h`` in its interior (1-D or 2-D; ``forward``: half the neighbour
-    offsets, the others their negatives).  Candidates have no higher neighbour; two adjacent
-    candidates are equal, so the candidates with an equal neighbour group into plateaus by
-    connectivity alone; a plateau that has an equal neighbour outside the candidates (a higher
-    point next to it, or the border) is dropped."""
-    from scipy import ndimage
+def _regional_maxima(h, forward, periodic: bool) -> np.ndarray:
+    """The regional maxima of ``h`` (1-D or 2-D; ``forward``: half the neighbour offsets, the
+    others their negatives): in its interior, or everywhere on a periodic map.  Candidates have
+    no higher neighbour; two adjacent candidates are equal, so the candidates with an equal
+    neighbour group into plateaus by connectivity alone (joined across the edges of a periodic
+    map); a plateau that has an equal neighbour outside the candidates (a point next to a
+    higher one, or the border of a free map) is dropped."""
+    from scipy import ndimage, sparse
+    from scipy.sparse import csgraph
 
-    inner = tuple(slice(1, n - 1) for n in h.shape)
-    c = h[inner]
+    offsets = [o for f in forward for o in (f, tuple(-k for k in f))]
+    if periodic:
+        c = h
+        axes = tuple(range(h.ndim))
+
+        def neighbour(a, o):
+            return np.roll(a, tuple(-k for k in o), axis=axes)
+    else:
+        inner = tuple(slice(1, n - 1) for n in h.shape)
+        c = h[inner]
+
+        def neighbour(a, o):
+            return a[tuple(slice(1 + k, n - 1 + k) for k, n in zip(o, a.shape, strict=True))]
     higher = np.zeros(c.shape, dtype=bool)
     equal = np.zeros(c.shape, dtype=bool)
-    offsets = [o for f in forward for o in (f, tuple(-k for k in f))]
     for o in offsets:
-        other = h[tuple(slice(1 + k, n - 1 + k) for k, n in zip(o, h.shape, strict=True))]
+        other = neighbour(h, o)
         higher |= other > c
         equal |= other == c
     candidate = ~higher
+    if periodic and not np.any(h != h.flat[0]):
+        return np.zeros(c.shape, dtype=bool)  # a constant periodic map: one plateau, no lower point
     plateau = candidate & equal
     if not plateau.any():
         return candidate
-    # a plateau point with an equal neighbour that is no candidate (or on the border) spoils it
-    full = np.zeros(h.shape, dtype=bool)
-    full[inner] = candidate
-    spoiled = np.zeros(c.shape, dtype=bool)
+    if periodic:
+        full = candidate
+    else:
+        full = np.zeros(h.shape, dtype=bool)
+        full[inner] = candidate
+    spoiled = np.zeros(c.shape, dtype=bool)  # an equal neighbour that is no candidate (or the border)
     for o in offsets:
-        shifted = tuple(slice(1 + k, n - 1 + k) for k, n in zip(o, h.shape, strict=True))
-        spoiled |= (h[shifted] == c) & ~full[shifted]
+        spoiled |= (neighbour(h, o) == c) & ~neighbour(full, o)
     labels, count = ndimage.label(plateau, structure=np.ones((3,) * h.ndim, dtype=bool))
-    bad = np.zeros(count + 1, dtype=bool)
-    bad[labels[plateau & spoiled]] = True
-    bad[0] = True
-    flat = labels.ravel()
-    ids, first = np.unique(flat, return_index=True)
-    keep = first[~bad[ids]]
+    component = np.arange(count + 1)
+    if periodic:  # plateaus that meet across an edge are one
+        pairs = [np.stack([labels.ravel(), neighbour(labels, o).ravel()]) for o in offsets]
+        a, b = np.concatenate(pairs, axis=1)
+        join = (a > 0) & (b > 0) & (a != b)
+        graph = sparse.coo_matrix((np.ones(join.sum()), (a[join], b[join])), shape=(count + 1, count + 1))
+        component = csgraph.connected_components(graph, directed=False)[1]
+    bad = np.zeros(component.max() + 1, dtype=bool)
+    bad[component[labels[plateau & spoiled]]] = True
+    points = np.flatnonzero(plateau)
+    ids, first = np.unique(component[labels.ravel()[points]], return_index=True)
     out = (candidate & ~plateau).reshape(-1)
-    out[keep] = True
+    out[points[first[~bad[ids]]]] = True
     return out.reshape(c.shape)
 
 
