@@ -54,8 +54,9 @@ class Model:
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity heights (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity heights (default: ``Gaussian()``, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
     interaction : None, 'none' or an interaction object, optional
         Asperity interaction (:mod:`asperity.interaction`): None (default) is plain GW;
         a :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood &
@@ -231,8 +232,9 @@ def separation_curve(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity heights (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity heights (default: ``Gaussian()``, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
     interaction : None, 'none' or an interaction object, optional
         Asperity interaction (:mod:`asperity.interaction`; default None, plain GW): with a
         :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood & Paggi
@@ -294,8 +296,9 @@ def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity heights (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity heights (default: ``Gaussian()``, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
     interaction : None, 'none' or an interaction object, optional
         Asperity interaction (:mod:`asperity.interaction`; default None, plain GW): with a
         :class:`~asperity.interaction.MeanFieldInteraction` (Ciavarella, Greenwood & Paggi
@@ -355,8 +358,9 @@ def pull_off(alpha, beta, gamma, *, nu=0.3, h_over_b=1.0, friction=None, heights
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction law (default: Hurtado-Kim; it does not change the force).
-    heights : HeightDistribution
-        Asperity heights (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity heights (default: ``Gaussian()``, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
     d_max : float, optional
         Upper end of the search, :math:`0 < \bar d_{max} \le 30 - \bar u_{end}` (default:
         :math:`10 - \bar u_{end}`, 10 sigma beyond the end of the asperities' stable branch,

@@ -103,8 +103,9 @@ def cycle(alpha, beta, gamma=0.0, *, d_min=None, preload=None, d_max=None, d=Non
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1).
     friction : FrictionLaw, optional
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity heights (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity heights (default: ``Gaussian()``, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
     law : ContactLaw, optional
         Per-asperity law built for these parameters (default: ``AsperityLaw``).
 
@@ -172,8 +173,9 @@ def preload_curve(preload, alpha, beta, gamma=0.0, *, d_max=None, u_in=0.0, nu=0
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1).
     friction : FrictionLaw, optional
         Single-asperity friction law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity heights (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity heights (default: ``Gaussian()``, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
     law : ContactLaw, optional
         Per-asperity law built for these parameters (default: ``AsperityLaw``).
 

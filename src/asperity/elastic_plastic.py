@@ -162,8 +162,9 @@ def plastic_fraction(d, u_c, heights: HeightDistribution = GAUSSIAN):
     u_c : array_like
         Critical penetration :math:`\bar u_c = \omega_c/\sigma > 0` (:func:`critical_penetration`),
         broadcast with ``d``.
-    heights : HeightDistribution
-        Asperity heights (default Gaussian, Eq 19).
+    heights : HeightDistribution or str
+        Asperity heights (default Gaussian, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
 
     Returns
     -------

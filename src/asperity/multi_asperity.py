@@ -70,6 +70,7 @@ def _is_array(value) -> bool:
 def _integrals(d, alpha, beta, gamma, nu, h_over_b, friction, heights, column):
     """One column of the integrals, broadcast over ``d`` and the parameters like a ufunc: one
     tabulation per distinct parameter set; a NumPy scalar for scalar inputs."""
+    heights = check_heights(heights)  # a spec string read once, not once per parameter set (a review)
     values = dict(zip(_PARAMETERS, (alpha, beta, gamma, nu, h_over_b), strict=True))
     if not any(_is_array(v) for v in values.values()):
         out = _one_set(d, alpha, beta, gamma, nu, h_over_b, friction, heights)[column]
@@ -118,8 +119,9 @@ def contact_fraction(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, frictio
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19); or a spec
+        string (``'weibull:skew=0.5'``, :func:`asperity.heights.parse_heights`).
 
     Returns
     -------
@@ -181,8 +183,9 @@ def normal_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=No
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19); or a spec
+        string (``'weibull:skew=0.5'``, :func:`asperity.heights.parse_heights`).
 
     Returns
     -------
@@ -240,8 +243,9 @@ def friction_force(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19); or a spec
+        string (``'weibull:skew=0.5'``, :func:`asperity.heights.parse_heights`).
 
     Returns
     -------
@@ -300,8 +304,9 @@ def real_contact_area(d, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, fricti
         Dugdale range over Burgers vector :math:`h/b > 0` (Eq 15; default 1, as in the paper).
     friction : FrictionLaw, optional
         Single-asperity friction stress law (default: Hurtado-Kim with the paper's constants).
-    heights : HeightDistribution
-        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19).
+    heights : HeightDistribution or str
+        Asperity height statistics :math:`\phi` (default: ``Gaussian()``, Eq 19); or a spec
+        string (``'weibull:skew=0.5'``, :func:`asperity.heights.parse_heights`).
 
     Returns
     -------

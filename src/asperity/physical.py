@@ -130,8 +130,9 @@ class PhysicalContact(ContactGroups, ContactDescription, ContactPlasticity):
         True (default): Maugis-Dugdale adhesion with the material's work of adhesion
         ``w``; a material without ``w`` raises :class:`ValueError`.  ``w = 0`` gives
         :math:`\gamma = 0`, the Hertz model.  False: :math:`\gamma = 0` (Hertz) whatever ``w``.
-    heights : HeightDistribution
-        Summit heights in units of :math:`\sigma_s` (default Gaussian, Eq 19).
+    heights : HeightDistribution or str
+        Summit heights in units of :math:`\sigma_s` (default Gaussian, Eq 19); or a spec string (``'weibull:skew=0.5'``,
+        :func:`asperity.heights.parse_heights`).
     interaction : str, optional
         Asperity interaction, a name of :data:`asperity.interaction.INTERACTIONS`:
         ``'none'`` (default, plain GW) or ``'cgp2008'``, the mean-field correction of

@@ -68,7 +68,7 @@ class Tabulation:
         Model parameters.
     d_min, d_max : float
         Range of separations :math:`d/\sigma` the nodes must serve, ``d_min <= d_max``.
-    heights : HeightDistribution
+    heights : HeightDistribution or str
         Asperity height distribution (default Gaussian, Eq 19).  One whose sums do not
         factorise (``fast_sums`` False) is tabulated in the separation and interpolated by
         :class:`asperity.height_sums.HeightSums`, to which :meth:`sums` then delegates.

@@ -1,8 +1,9 @@
 r"""The summits of a height map, each with its own height, curvature and position.
 
 The deterministic asperity models (:mod:`asperity.icha`) act on the summits of the
-measured map itself, not on a distribution: every 8-neighbour local maximum of the map
-(:func:`asperity.topography.detected.local_maxima_2d`; plateaus count once) is one
+measured map itself, not on a distribution: every regional maximum of the map (8
+neighbours; :func:`asperity.topography.detected.local_maxima_2d`: a plateau once, a shoulder
+never, wrapping round a periodic map; a point flat both ways dropped) is one
 paraboloidal cap of height :math:`z` above the mean plane.  Its two principal curvatures
 :math:`\kappa_1, \kappa_2` come from central differences of :math:`h_{xx}, h_{yy}, h_{xy}`;
 its radius is
@@ -97,7 +98,7 @@ def map_summits(heights, pixel_size, *, periodic: bool, radius: str = "geometric
         R = \Big[-\tfrac12(h_{xx} + h_{yy})\Big]^{-1}\ (\text{mean}),\qquad
         z = h - \langle h\rangle
 
-    at the 8-neighbour local maxima of the map (:func:`~asperity.topography.detected.local_maxima_2d`).
+    at the regional maxima of the map (:func:`~asperity.topography.detected.local_maxima_2d`).
 
     Parameters
     ----------

@@ -212,13 +212,14 @@ def detected_summits(topography) -> SummitParameters:
 
     After removing the mean plane (line):
 
-    * **map** -- summits are interior 8-neighbour local maxima (border rows and columns
-      excluded; plateaus count once).  The summit curvature is the mean of the two
-      principal curvatures, :math:`\kappa = -(h_{xx}+h_{yy})/2`, from central
+    * **map** -- summits are the interior regional maxima (:func:`local_maxima_2d`: 8
+      neighbours, a plateau once, a shoulder never; border rows and columns excluded).  The
+      summit curvature is the mean of the two principal curvatures, :math:`\kappa = -(h_{xx}+h_{yy})/2`, from central
       differences; :math:`R = 1/\bar\kappa`, :math:`\sigma_s` is the standard deviation
       of the summit heights and :math:`\eta` the number of summits divided by the
       interior area :math:`(n_x-2)(n_y-2)\Delta x\Delta y`.
-    * **line scan** -- profile peaks are interior 3-point maxima, with peak density
+    * **line scan** -- profile peaks are the interior regional maxima (:func:`local_maxima_1d`),
+      with peak density
       :math:`D_p` (per length), mean peak curvature :math:`\bar\kappa_p = -\overline{h''}`
       and peak-height deviation :math:`\sigma_p`.  They are converted to summit values
       of the isotropic Gaussian surface the profile is taken from, using its profile
@@ -230,7 +231,9 @@ def detected_summits(topography) -> SummitParameters:
       :math:`\sigma_p^2 = m_0(1 - (\pi/2-1)/\alpha_N)` and
       :math:`\sigma_s^2 = m_0(1 - 0.8968/\alpha_N)` give
       :math:`\sigma_s = \sigma_p\,[(1-0.8968/\alpha_N)/(1-(\pi/2-1)/\alpha_N)]^{1/2}`,
-      with :math:`\alpha_N` from the profile's moments.
+      with :math:`\alpha_N` from the profile's moments; the mean peak height times
+      :data:`PEAK_TO_SUMMIT_MEAN` (Nayak's :math:`4\sigma/\sqrt{\pi\alpha_N}` over Rice's
+      :math:`\sigma\sqrt{\pi/2\alpha_N}`) gives the mean summit height.
 
     .. math::
 
