@@ -115,57 +115,66 @@ def _regional_maxima(h, forward, periodic: bool) -> np.ndarray:
     no higher neighbour; two adjacent candidates are equal, so the candidates with an equal
     neighbour group into plateaus by connectivity alone (joined across the edges of a periodic
     map); a plateau that has an equal neighbour outside the candidates (a point next to a
-    higher one, or the border of a free map) is dropped."""
+    higher one, or the border of a free map) is dropped.  Only the comparisons for "higher"
+    touch the whole map; the rest works on the candidates' indices."""
     from scipy import ndimage, sparse
     from scipy.sparse import csgraph
 
     offsets = [o for f in forward for o in (f, tuple(-k for k in f))]
-    if periodic:
-        c = h
-        axes = tuple(range(h.ndim))
-
-        def neighbour(a, o):
-            return np.roll(a, tuple(-k for k in o), axis=axes)
-    else:
-        inner = tuple(slice(1, n - 1) for n in h.shape)
-        c = h[inner]
-
-        def neighbour(a, o):
-            return a[tuple(slice(1 + k, n - 1 + k) for k, n in zip(o, a.shape, strict=True))]
+    hp = np.pad(h, 1, mode="wrap") if periodic else h
+    inner = tuple(slice(1, n - 1) for n in hp.shape)
+    c = hp[inner]
     higher = np.zeros(c.shape, dtype=bool)
-    equal = np.zeros(c.shape, dtype=bool)
     for o in offsets:
-        other = neighbour(h, o)
-        higher |= other > c
-        equal |= other == c
+        higher |= hp[tuple(slice(1 + k, n - 1 + k) for k, n in zip(o, hp.shape, strict=True))] > c
     candidate = ~higher
     if periodic and not np.any(h != h.flat[0]):
         return np.zeros(c.shape, dtype=bool)  # a constant periodic map: one plateau, no lower point
-    plateau = candidate & equal
-    if not plateau.any():
-        return candidate
-    if periodic:
-        full = candidate
-    else:
-        full = np.zeros(h.shape, dtype=bool)
-        full[inner] = candidate
-    spoiled = np.zeros(c.shape, dtype=bool)  # an equal neighbour that is no candidate (or the border)
+    points = np.flatnonzero(candidate)
+    at = np.unravel_index(points, c.shape)
+    values = c.ravel()[points]
+
+    def neighbours(o):
+        """Flat indices in ``c`` of the candidates' neighbours at offset ``o`` (-1: off a free map)."""
+        moved = [a + k for a, k in zip(at, o, strict=True)]
+        if periodic:
+            return np.ravel_multi_index(moved, c.shape, mode="wrap")
+        inside = np.all([(m >= 0) & (m < n) for m, n in zip(moved, c.shape, strict=True)], axis=0)
+        flat = np.ravel_multi_index([np.clip(m, 0, n - 1) for m, n in zip(moved, c.shape, strict=True)], c.shape)
+        return np.where(inside, flat, -1)
+
+    def neighbour_values(o):
+        return hp[tuple(a + 1 + k for a, k in zip(at, o, strict=True))]
+
+    equal = np.zeros(points.size, dtype=bool)
+    spoiled = np.zeros(points.size, dtype=bool)
+    flat_candidate = candidate.ravel()
+    nbrs = {}
     for o in offsets:
-        spoiled |= (neighbour(h, o) == c) & ~neighbour(full, o)
-    labels, count = ndimage.label(plateau, structure=np.ones((3,) * h.ndim, dtype=bool))
+        same = neighbour_values(o) == values
+        nbrs[o] = neighbours(o)
+        equal |= same
+        spoiled |= same & ((nbrs[o] < 0) | ~flat_candidate[np.maximum(nbrs[o], 0)])
+    if not equal.any():
+        return candidate
+    plateau = np.zeros(c.size, dtype=bool)
+    plateau[points[equal]] = True
+    labels, count = ndimage.label(plateau.reshape(c.shape), structure=np.ones((3,) * h.ndim, dtype=bool))
+    labels = labels.ravel()
     component = np.arange(count + 1)
     if periodic:  # plateaus that meet across an edge are one
-        pairs = [np.stack([labels.ravel(), neighbour(labels, o).ravel()]) for o in offsets]
-        a, b = np.concatenate(pairs, axis=1)
-        join = (a > 0) & (b > 0) & (a != b)
+        a = np.concatenate([labels[points[equal]] for _ in offsets])
+        b = np.concatenate([labels[nbrs[o][equal]] for o in offsets])
+        join = (b > 0) & (a != b)
         graph = sparse.coo_matrix((np.ones(join.sum()), (a[join], b[join])), shape=(count + 1, count + 1))
         component = csgraph.connected_components(graph, directed=False)[1]
     bad = np.zeros(component.max() + 1, dtype=bool)
-    bad[component[labels[plateau & spoiled]]] = True
-    points = np.flatnonzero(plateau)
-    ids, first = np.unique(component[labels.ravel()[points]], return_index=True)
-    out = (candidate & ~plateau).reshape(-1)
-    out[points[first[~bad[ids]]]] = True
+    bad[component[labels[points[equal & spoiled]]]] = True
+    members = points[equal]  # in increasing flat order: each component's first is its first in row order
+    ids, first = np.unique(component[labels[members]], return_index=True)
+    out = candidate.ravel().copy()
+    out[members] = False
+    out[members[first[~bad[ids]]]] = True
     return out.reshape(c.shape)
 
 
