@@ -10,12 +10,17 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["strict_float"]
+__all__ = ["strict_float", "FloatUnderflow"]
 
 #: A decimal number as written in ASCII: what :func:`strict_float` reads (with nan, inf).
 _DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
 _SPECIAL = {"nan": math.nan, "+nan": math.nan, "-nan": math.nan, "inf": math.inf, "+inf": math.inf,
             "-inf": -math.inf, "infinity": math.inf, "+infinity": math.inf, "-infinity": -math.inf}
+
+
+class FloatUnderflow(ValueError):
+    """A nonzero number too small for a double (:func:`strict_float`): its message says so,
+    where a number that is not one at all gets ``float``'s own words."""
 
 
 def strict_float(text: str) -> float:
@@ -29,7 +34,8 @@ def strict_float(text: str) -> float:
     Raises
     ------
     ValueError
-        For anything else, with a message in ``float``'s words.
+        For anything else, with a message in ``float``'s words; :class:`FloatUnderflow` for a
+        number too small for a double.
     """
     if not isinstance(text, str):
         raise ValueError(f"could not convert {type(text).__name__} to float: {text!r}")
@@ -41,5 +47,5 @@ def strict_float(text: str) -> float:
         raise ValueError(f"could not convert string to float: {text!r}")
     value = float(stripped)
     if value == 0.0 and re.search(r"[1-9]", stripped.split("e")[0].split("E")[0]):
-        raise ValueError(f"{text!r} is smaller than the smallest double (about 5e-324): it would be read as 0")
+        raise FloatUnderflow(f"{text!r} is smaller than the smallest double (about 5e-324): it would be read as 0")
     return value

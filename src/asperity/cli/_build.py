@@ -14,7 +14,7 @@ Nothing here imports NumPy, SciPy or the model at module level.
 
 from __future__ import annotations
 
-from .._numbers import strict_float
+from .._numbers import FloatUnderflow, strict_float
 from .._warnings import AsperityWarning
 from ._args import CONTACT_OPTIONS
 from ._lists import UsageError, optional_quantity, quantity, quantity_items
@@ -67,7 +67,7 @@ def _number(text, name: str):
         return strict_float(text)
     except ValueError as err:
         shown = repr(text) if len(text) <= 60 else repr(text[:60]) + "..."
-        why = "" if str(err).startswith("could not convert") else f" ({err})"  # an underflow says so
+        why = f" ({err})" if isinstance(err, FloatUnderflow) else ""
         raise UsageError(f"{name}: expected a number (dimensionless, without a physical contact), "
                          f"got {shown}{why}") from None
 

@@ -22,7 +22,7 @@ Every error lists the valid names or parameters.
 
 from __future__ import annotations
 
-from .._numbers import strict_float
+from .._numbers import FloatUnderflow, strict_float
 from .base import HeightDistribution
 from .empirical import Empirical
 from .exponential import Exponential
@@ -164,9 +164,10 @@ def parse_heights(spec) -> HeightDistribution:
             raise ValueError(f"heights: {k} given twice in {spec!r}")
         try:
             params[k] = strict_float(v.strip())
-        except ValueError as err:
-            why = "" if str(err).startswith("could not convert") else f": {err}"  # an underflow says so
-            raise ValueError(f"heights: {k} must be a number, got {v.strip()!r} in {spec!r}{why}") from None
+        except FloatUnderflow as err:
+            raise ValueError(f"heights: {k} must be a number, got {v.strip()!r} in {spec!r}: {err}") from None
+        except ValueError:
+            raise ValueError(f"heights: {k} must be a number, got {v.strip()!r} in {spec!r}") from None
     if colon and not params:
         if DISTRIBUTIONS[key].parameters:
             raise ValueError(f"heights: {key} needs its parameters: {SPELLINGS[key]}")
