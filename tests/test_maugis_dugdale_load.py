@@ -174,3 +174,17 @@ def test_penetration_in_maugis_units_broadcasts():
     K = 4.0 / 3.0 * E_STAR
     np.testing.assert_allclose(D, 1e-9 / np.cbrt(math.pi**2 * WORKS**2 * RADII / K**2), rtol=1e-15)
     np.testing.assert_allclose(unit, math.pi * WORKS * RADII, rtol=1e-15)
+
+
+@pytest.mark.parametrize("lam", [0.05, 1.0, 10.0, 1e3])
+@pytest.mark.parametrize("ulps", [1, 2, 4, 16])
+def test_a_load_ulps_above_the_pull_off_is_solved(lam, ulps):
+    # Found by hypothesis in CI (lam = 10, frac = 2.2e-16): the residual at the pull-off was
+    # already at rounding level, and a Newton step taken from there, where P(t) is flat, moved
+    # the answer to P = -1.501595 for -1.501625.
+    po = md.md_pull_off(lam, "load")
+    P = po.P + ulps * np.spacing(abs(po.P))
+    A, delta, t = mdl.md_solve_load([P], lam)
+    A2, P2, D2 = md.md_curve(t, lam)
+    np.testing.assert_allclose(P2, [P], rtol=1e-12, atol=1e-12)
+    assert t[0] <= po.t
