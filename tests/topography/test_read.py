@@ -323,3 +323,26 @@ def test_npy_first_axis_is_x_text_rows_are_y_and_long_pixels_are_noted(tmp_path)
     assert npy.nb_grid_pts == (24, 40) and txt.nb_grid_pts == (40, 24) and square.nb_grid_pts == (24, 40)
     np.testing.assert_array_equal(npy.heights(), square.heights())
     np.testing.assert_allclose(np.asarray(txt.heights()).T, npy.heights(), rtol=1e-15)
+
+
+def test_the_readers_notes_are_in_the_analysis_and_the_surface_json(tmp_path, capsys):
+    """Found by a review: a .npy map's pixel-shape note went to standard error only, so
+    ``asperity surface --format json`` did not hold it.  Now it is one of the analysis's
+    warnings (issued once, not also as a Python warning); a square-pixel map has none."""
+    import json
+
+    from asperity.cli import main
+
+    h = np.random.default_rng(3).standard_normal((48, 80))
+    np.save(tmp_path / "a.npy", h)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        result = analyse_surface(tmp_path / "a.npy", physical_sizes=("5um", "3um"), unit="nm")
+        square = analyse_surface(tmp_path / "a.npy", physical_sizes=("4.8um", "8um"), unit="nm")
+    pixel_notes = [w for w in result.warnings if "the pixels are" in w]
+    assert len(pixel_notes) == 1 and pixel_notes[0].startswith(f"{tmp_path / 'a.npy'}: the pixels are 104.2 x 37.5")
+    assert not any("the pixels are" in w for w in square.warnings)
+    code = main(["surface", str(tmp_path / "a.npy"), "--size", "5um,3um", "--unit", "nm", "--format", "json"])
+    assert code in (0, None)
+    out, err = capsys.readouterr()
+    assert json.loads(out)["warnings"] == result.to_dict()["warnings"] and "the pixels are" not in err

@@ -23,12 +23,14 @@ References
 from __future__ import annotations
 
 import os
+import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from .._validation import check_optional_positive
+from .._warnings import AsperityWarning
 from ..groups import regime_beta, roughness_alpha
 from ..heights import MIN_SAMPLES, HeightsFit, fit_heights, write_samples
 from ..materials import as_material
@@ -227,7 +229,9 @@ def analyse_surface(path_or_topography, *, material=None, b=None, heights: bool 
     Returns
     -------
     SurfaceAnalysis
-        ``warnings`` lists, as strings: the two methods disagree (by more than a factor
+        ``warnings`` lists, as strings: the reader's notes on a file (e.g. a ``.npy``
+        map's pixels more than twice as long one way: they are listed here, not issued as
+        Python warnings); the two methods disagree (by more than a factor
         1.5 in :math:`R` or :math:`\\eta`, or 30 % in :math:`\\sigma_s`); the bandwidth
         parameter :math:`\\alpha_N < 5` (Nayak's relations are unreliable); the
         resolution is too coarse (summits fewer than 5 pixels apart, or :math:`R`
@@ -254,9 +258,9 @@ def analyse_surface(path_or_topography, *, material=None, b=None, heights: bool 
     >>> result.spectral.surface(1e-6)  # doctest: +SKIP
     """
     b_value = _burgers(material, b)
-    source = None
+    source, read_notes = None, []
     if isinstance(path_or_topography, str | os.PathLike):
-        topo = read_topography(path_or_topography, **read_kwargs)
+        topo, read_notes = _read_with_notes(path_or_topography, read_kwargs)
         source = os.fsdecode(os.fspath(path_or_topography))
     elif not all(hasattr(path_or_topography, a) for a in ("heights", "dim", "nb_grid_pts", "detrend")):
         raise TypeError(f"path_or_topography must be a file path (str or os.PathLike) or a SurfaceTopography "
@@ -290,9 +294,25 @@ def analyse_surface(path_or_topography, *, material=None, b=None, heights: bool 
         nb_grid_pts=tuple(int(n) for n in topo.nb_grid_pts),
         physical_sizes=tuple(float(s) for s in topo.physical_sizes), pixel_size=pixel,
         n_points=int(np.prod(topo.nb_grid_pts)),
-        warnings=_diagnose(spectral, detected, pixel, topo.dim) + _no_burgers(material, b_value) + notes,
+        warnings=read_notes + _diagnose(spectral, detected, pixel, topo.dim) + _no_burgers(material, b_value) + notes,
         b=b_value, groups=None if b_value is None else _groups(spectral, detected, b_value),
         source=source, heights=fit, summit_heights=z)
+
+
+def _read_with_notes(path, read_kwargs: dict):
+    """The topography and the reader's notes (its :class:`~asperity.AsperityWarning` messages,
+    e.g. long .npy pixels), which belong in the analysis's ``warnings`` (so that ``asperity
+    surface --format json`` holds them) instead of being issued; other warnings pass on."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        topo = read_topography(path, **read_kwargs)
+    notes = []
+    for w in caught:
+        if issubclass(w.category, AsperityWarning):
+            notes.append(" ".join(str(w.message).split()))
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
+    return topo, list(dict.fromkeys(notes))
 
 
 def _burgers(material, b):
