@@ -279,3 +279,31 @@ def test_dash_is_no_image_nor_sweep_and_summit_files_are_inputs(capsys, tmp_path
     for output in (None, "-"):
         assert _output.output_format(argparse.Namespace(format=None, output=output)) == "table"
     assert _output.output_format(argparse.Namespace(format=None, output="x.csv")) == "csv"
+
+
+def test_heat_map_title_names_what_grey_means(sweep_file, tmp_path, monkeypatch):
+    """Found by a newcomer: cells grey for a zero pull-off (gamma = 0, log colours) were titled
+    'grey: <= 0 or not computed (see message)' though every set was computed.  The title now
+    names what is there: '<= 0', 'not computed (see message)' (a NaN set), or both."""
+    pytest.importorskip("matplotlib")
+    import xarray as xr
+    from matplotlib.figure import Figure
+
+    from asperity.cli import plot
+
+    titles = []
+    savefig = Figure.savefig
+    monkeypatch.setattr(Figure, "savefig", lambda fig, *a, **k: (titles.append(fig.axes[0].get_title()),
+                                                                   savefig(fig, *a, **k)))
+    with xr.open_dataset(sweep_file) as ds:
+        ds = ds.load()
+    assert float(ds["pull_off"].sel(gamma=0.0).max()) <= 0.0 < float(ds["pull_off"].max())  # zero at gamma = 0
+    plot.heat_map(ds, "alpha", "gamma", "pull_off", {}, str(tmp_path / "a.png"), "png")
+    failed = ds.copy(deep=True)
+    failed["pull_off"][{"alpha": 1, "gamma": 2}] = np.nan
+    plot.heat_map(failed, "alpha", "gamma", "pull_off", {}, str(tmp_path / "b.png"), "png")
+    failed["mu"][{"alpha": 1, "gamma": 2, "P": 0}] = np.nan  # mu > 0 everywhere
+    plot.heat_map(failed, "alpha", "gamma", "mu", {"P": 1.0}, str(tmp_path / "c.png"), "png")
+    plot.heat_map(ds, "alpha", "gamma", "mu", {"P": 1.0}, str(tmp_path / "d.png"), "png")
+    assert titles == ["grey: <= 0", "grey: <= 0 or not computed (see message)",
+                      "P = 1, grey: not computed (see message)", "P = 1"]

@@ -103,7 +103,9 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
     FigureCanvasAgg(fig)
     ax = fig.subplots()
     finite = values[np.isfinite(values)]
+    failed = not np.all(np.isfinite(values))  # NaN: a set outside the model's domain (its message says why)
     log_z = bool(np.any(finite > 0)) and _is_log(z, quantity)
+    not_positive = log_z and bool(np.any(finite <= 0))
     if log_z:  # decades: a log colour scale; zeros (no pull-off, say) and NaN drawn grey
         values = np.where(values > 0, values, np.nan)
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.85")
@@ -119,8 +121,9 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
     bar = fig.colorbar(mesh, ax=ax)
     bar.set_label(_label(ds[z], z))
     notes = [f"{k} = {float(var[k]):.4g}" for k in at]
-    if not np.all(np.isfinite(values)):
-        notes.append("grey: " + ("<= 0 or " if log_z else "") + "not computed (see message)")
+    grey = (["<= 0"] if not_positive else []) + (["not computed (see message)"] if failed else [])
+    if grey:
+        notes.append("grey: " + " or ".join(grey))
     if notes:
         ax.set_title(", ".join(notes), fontsize=10)
     fig.savefig(path, dpi=150, format=fmt)
