@@ -23,8 +23,9 @@ def au():
     return PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
 
 
-def test_csv_is_the_library_csv(capsys):
-    code, out, _ = run(capsys, "cycle", *ABOVE, "--dmin", "-0.5", "--points", "7", "--format", "csv")
+@pytest.mark.parametrize("dmin", ["--dmin", "--d-min"])
+def test_csv_is_the_library_csv(capsys, dmin):
+    code, out, _ = run(capsys, "cycle", *ABOVE, dmin, "-0.5", "--points", "7", "--format", "csv")
     assert code == 0
     assert out == cycle(*P_ABOVE, d_min=-0.5, n=7).to_csv()
     rows = rows_of(out)
@@ -32,8 +33,9 @@ def test_csv_is_the_library_csv(capsys):
     assert [r["branch"] for r in rows] == ["approach"] * 7 + ["retract"] * 7
 
 
-def test_json_is_rows_pull_off_and_energy(capsys):
-    code, out, _ = run(capsys, "cycle", *ABOVE, "--preload", "100", "--dmax", "6", "--points", "5",
+@pytest.mark.parametrize("dmax", ["--dmax", "--d-max"])  # pulloff's spelling too (a newcomer tried it)
+def test_json_is_rows_pull_off_and_energy(capsys, dmax):
+    code, out, _ = run(capsys, "cycle", *ABOVE, "--preload", "100", dmax, "6", "--points", "5",
                        "--format", "json")
     assert code == 0
     got = strict_json(out)

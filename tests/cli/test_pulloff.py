@@ -47,13 +47,14 @@ def test_pulloff_table_without_a_pull_off_shows_a_dash(capsys):
     assert code == 0 and header.split() == ["pull_off", "d", "exists"] and row.split() == ["0", "-", "False"]
 
 
+@pytest.mark.parametrize("option", ["--d-max", "--dmax"])  # cycle's spelling too
 @pytest.mark.parametrize("d_max", ["2.5", "5nm", "5e-9m", "0.005 um"])
-def test_physical_d_max_as_a_number_or_a_length_equals_the_library(capsys, d_max):
+def test_physical_d_max_as_a_number_or_a_length_equals_the_library(capsys, d_max, option):
     """A review: --d-max 5nm was refused ('invalid float value') where cycle's --dmax needs a unit;
     with a physical contact it now takes both (a number in units of sigma_s, as before)."""
     from asperity.physical import PhysicalContact, Surface
 
-    code, out, err = run(capsys, "pulloff", *AU, "--d-max", d_max, "--format", "json")
+    code, out, err = run(capsys, "pulloff", *AU, option, d_max, "--format", "json")
     assert code == 0, err
     contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
     api = float(d_max) if d_max[0].isdigit() and d_max.replace(".", "").isdigit() else d_max

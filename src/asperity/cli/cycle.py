@@ -51,9 +51,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_model_arguments(parser, gamma_required=True)
     add_contact_arguments(parser)
     g = parser.add_argument_group("cycle (give --dmin or --preload)")
-    g.add_argument("--dmin", metavar="D", help=_help("dmin"))
+    g.add_argument("--dmin", "--d-min", dest="dmin", metavar="D", help=_help("dmin"))
     g.add_argument("--preload", metavar="P", help=_help("preload"))
-    g.add_argument("--dmax", metavar="D", help=_help("dmax"))
+    g.add_argument("--dmax", "--d-max", dest="dmax", metavar="D", help=_help("dmax"))
     g.add_argument("--stiffness", metavar="K", help=_help("stiffness") + "; default inf (displacement control)")
     g.add_argument("--u-in", dest="u_in", metavar="U", help=_help("u_in") + "; default 0 (first touch)")
     g.add_argument("--d", metavar="LIST", help="evaluate both branches at these separations instead of the path: "

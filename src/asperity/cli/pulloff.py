@@ -17,7 +17,7 @@ DESCRIPTION = ("Largest tensile force |P|/(N G b^2) over separations up to d_max
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_model_arguments(parser, gamma_required=True)
     add_contact_arguments(parser)
-    parser.add_argument("--d-max", dest="d_max", default=None,
+    parser.add_argument("--d-max", "--dmax", dest="d_max", default=None,
                         help="largest separation d/sigma searched, in units of sigma (sigma_s with a physical "
                              "contact, which also takes a length, e.g. 20nm); default: 10 beyond the end of the "
                              "asperities' stable branch, i.e. 10 without adhesion range")
