@@ -146,6 +146,31 @@ def test_gw_physical_with_the_contact_flags(capsys, tmp_path):
     assert code == 0 and out == "".join(f"# {line}\n" for line in contact.describe().splitlines()) + res.summary()
 
 
+@pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")  # gold yields: a note in the fit
+@pytest.mark.parametrize("vary", [[], ["--vary", "tau_Pa"]])
+def test_gw_physical_with_tau_fits_the_one_constant_shear_strength(capsys, tmp_path, vary):
+    """Found by a user trial: with --tau the header said 'constant shear strength' while the
+    fit varied the two Hurtado-Kim strengths, and '--vary tau_Pa' was unknown."""
+    from asperity.friction_stress import ConstantShear
+    from asperity.physical import PhysicalContact, Surface
+
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6), adhesion=False,
+                              friction=ConstantShear(50e6 / 54.17e9))
+    P = np.geomspace(1e-3, 1.0, 12)
+    path = write(tmp_path / "au.csv", "load [N],friction [N]",
+                 zip(P, PhysicalContact("Au", contact.surface, adhesion=False).load_curve(P).area * 8e7, strict=True))
+    flags = ["--material", "Au", "--no-adhesion", "--sigma-s", "2nm", "--R", "1um", "--eta", "1e12/m^2",
+             "--area", "1mm^2", "--tau", f"{50e6 / 54.17e9 * contact.G_star}Pa"]
+    code, out, err = run(capsys, "fit", str(path), "--model", "gw", *flags, *vary, "--ci", "wald", "--format", "json")
+    assert code == 0, err
+    res = fit.fit_friction_load(path, "gw", contact=contact, ci="wald")
+    got = strict_json(out)
+    assert got == json.loads(json.dumps({"contact": contact.to_dict(), **res.to_dict()}))
+    assert got["parameters"]["tau_Pa"]["value"] == pytest.approx(8e7, rel=1e-6) and "tau1_Pa" not in got["parameters"]
+    code, out, err = run(capsys, "fit", str(path), "--model", "gw", *flags, "--vary", "tau1_Pa")
+    assert one_line_error(code, err, "tau1_Pa") and "tau_Pa" in err
+
+
 def test_table_output_plot_and_file(capsys, line, tmp_path):
     pytest.importorskip("matplotlib")
     out_file, png = tmp_path / "fit.txt", tmp_path / "fit.png"

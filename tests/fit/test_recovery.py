@@ -77,6 +77,31 @@ def test_gw_physical_through_a_contact():
     assert res.curve.columns()["F_N"].shape == res.curve.columns()["P_N"].shape  # a PhysicalCurve
 
 
+@pytest.mark.filterwarnings("ignore::asperity.plasticity.PlasticityWarning")  # gold yields
+def test_gw_physical_with_a_constant_shear_strength_fits_that_one_tau():
+    """Found by a user trial: a contact with a constant shear strength (``--tau``) was fitted
+    with the two Hurtado-Kim strengths started at tau (and ``--vary tau1_Pa`` alone left
+    tau2 at its start: 88 MPa, 95 % [87, 89.4], for data made with 80 MPa).  Now its one
+    ``tau_Pa`` is the parameter: data from an independent sum (F = tau A of the contact's area
+    curve, which test_physical checks against GW integrals) give it back."""
+    from asperity.physical import PhysicalContact, Surface
+
+    surface = Surface(2e-9, 1e-6, 1e12, 1e-6)
+    P = np.geomspace(1e-3, 10.0, 25)
+    true_tau = 80e6
+    area = PhysicalContact("Au", surface, adhesion=False).load_curve(P).area
+    noise = 1.0 + 0.03 * np.random.default_rng(5).standard_normal(P.size)
+    data = friction_load_data(P, true_tau * area * noise, physical=True)
+    start = PhysicalContact("Au", surface, adhesion=False, friction=asperity.ConstantShear(50e6 / 54.17e9))
+    res = fit_friction_load(data, "gw", contact=start, ci="wald")
+    assert [n for n, p in res.parameters.items() if p.vary] == ["tau_Pa"]
+    assert not any(name in res.parameters for name in ("tau1_Pa", "tau2_Pa", "a1", "a2"))
+    tau = res.parameters["tau_Pa"]
+    assert abs(tau.value / true_tau - 1) < 0.01 and tau.ci95[0] < true_tau < tau.ci95[1]
+    exact = fit_friction_load(friction_load_data(P, true_tau * area, physical=True), "gw", contact=start, ci="wald")
+    assert exact.parameters["tau_Pa"].value == pytest.approx(true_tau, rel=1e-6)
+
+
 @pytest.mark.parametrize("law", ["jkr", "dmt"])
 def test_single_asperity_w_tau_from_friction_and_w_R_tau_jointly(law):
     radius, force = LAWS[law]

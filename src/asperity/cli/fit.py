@@ -73,8 +73,9 @@ Models and their parameters (names as in --vary/--fix):
             H_over_E, h_star_over_sigma, fixed unless in --vary);
             with a physical contact (--material/--sigma-s/--R/--eta/--area, or --surface FILE,
             and the other contact options): sigma_s_m, R_m, eta_per_m2, area_m2, w_J_m2, b_m,
-            h_m, tau1_Pa, tau2_Pa, a1, a2 (physical data; the contact gives their start values,
-            its per-asperity law --law ... and its interaction stay as given)
+            h_m, tau1_Pa, tau2_Pa, a1, a2, or with --tau the one tau_Pa (physical data; the
+            contact gives their start values, its per-asperity law --law ... and its
+            interaction stay as given)
   hertz     R_m, E_star_Pa, tau_Pa        jkr, dmt   + w_J_m2        md   + w_J_m2, sigma0_Pa
   cos       F0, Pc, alpha_t (F0_N, Pc_N)  amontons   mu0, P0 (P0_N)
   force-separation fits add the offset d0 (d0_m).  The bodies (--material, or --E --nu,

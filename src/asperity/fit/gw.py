@@ -13,11 +13,12 @@ hardness).
 *Physical* data (newtons, metres) need a :class:`~asperity.physical.PhysicalContact`, which
 gives the material (:math:`E`, :math:`\nu`, hence :math:`E^*` and :math:`G^*`, fixed) and the
 start values of ``sigma_s_m``, ``R_m``, ``eta_per_m2``, ``area_m2`` (the surface),
-``w_J_m2``, ``b_m``, ``h_m`` and the Hurtado-Kim shear strengths ``tau1_Pa``
-:math:`= \bar\tau_{f1}G^*` and ``tau2_Pa`` :math:`= \bar\tau_{f2}G^*` with ``a1``, ``a2``
-(a constant shear strength :math:`\tau` is ``tau1_Pa = tau2_Pa``).  ``w_J_m2`` (unless the
-contact has no adhesion), ``tau1_Pa`` and ``tau2_Pa`` vary by default.  Each evaluation builds the contact for the
-current values and uses its dimensionless model and scales, exactly as
+``w_J_m2``, ``b_m``, ``h_m`` and the friction law's: the Hurtado-Kim shear strengths
+``tau1_Pa`` :math:`= \bar\tau_{f1}G^*` and ``tau2_Pa`` :math:`= \bar\tau_{f2}G^*` with ``a1``,
+``a2``, or, for a contact with a constant shear strength (``friction=ConstantShear(...)``,
+command line ``--tau``), the one ``tau_Pa`` :math:`= \bar\tau_f G^*`.  ``w_J_m2`` (unless the
+contact has no adhesion) and ``tau1_Pa``, ``tau2_Pa`` (or ``tau_Pa``) vary by default.  Each
+evaluation builds the contact for the current values and uses its dimensionless model and scales, exactly as
 :meth:`PhysicalContact.load_curve` does.  ``eta_per_m2`` and ``area_m2`` enter only
 through :math:`N = \eta A_0`: vary at most one of them.
 
@@ -136,14 +137,10 @@ class GWFit(FitModel):
             return {s.name: s for s in specs}
         c = self.contact
         s = c.surface
-        hk = _hk_of(c)
         specs = [parameter_spec("sigma_s", s.sigma_s, physical=True), parameter_spec("R", s.R, physical=True),
                  parameter_spec("eta", s.eta, physical=True), parameter_spec("area", s.area, physical=True),
                  parameter_spec("w", c.w, physical=True, vary=c.w > 0), parameter_spec("b", c.b, physical=True),
-                 parameter_spec("h", c.h, physical=True),
-                 parameter_spec("tau1", hk.tau_f1 * c.G_star, physical=True, vary=True),
-                 parameter_spec("tau2", hk.tau_f2 * c.G_star, physical=True, vary=True),
-                 parameter_spec("a1", hk.a1, physical=False), parameter_spec("a2", hk.a2, physical=False)]
+                 parameter_spec("h", c.h, physical=True), *_friction_specs(c)]
         if force:
             specs.append(parameter_spec("d0", 0.0, physical=True))
         return {p.name: p for p in specs}
@@ -169,7 +166,8 @@ class GWFit(FitModel):
             G_star = c.G_star
             material = replace(c.material, w=v["w_J_m2"], b=v["b_m"], h=None, sigma0=None)
             surface = Surface(v["sigma_s_m"], v["R_m"], v["eta_per_m2"], v["area_m2"])
-            friction = HurtadoKim(v["tau1_Pa"] / G_star, v["tau2_Pa"] / G_star, v["a1"], v["a2"])
+            friction = ConstantShear(v["tau_Pa"] / G_star) if "tau_Pa" in v else \
+                HurtadoKim(v["tau1_Pa"] / G_star, v["tau2_Pa"] / G_star, v["a1"], v["a2"])
             # everything else as the given contact: adhesion, heights, plasticity, interaction
             contact = PhysicalContact(material, surface, h=v["h_m"], friction=friction, adhesion=c.adhesion,
                                       heights=c.heights, **_law_of(c))
@@ -245,12 +243,18 @@ def _law_of(contact) -> dict:
             "interaction": contact.interaction.name}
 
 
-def _hk_of(contact) -> HurtadoKim:
+def _friction_specs(contact) -> list:
+    """The friction law's parameters of a physical fit: ``tau_Pa`` (varied) for a constant
+    shear strength (the contact's ``friction=ConstantShear``, command line ``--tau``), else
+    the Hurtado-Kim ``tau1_Pa``, ``tau2_Pa`` (varied), ``a1``, ``a2``."""
     law = contact.model.params.friction
-    if isinstance(law, HurtadoKim):
-        return law
     if isinstance(law, ConstantShear):
-        return HurtadoKim(law.tau, law.tau)
+        return [parameter_spec("tau", law.tau * contact.G_star, physical=True, vary=True,
+                               meaning="constant friction stress (Bowden-Tabor), tau_f G*")]
+    if isinstance(law, HurtadoKim):
+        return [parameter_spec("tau1", law.tau_f1 * contact.G_star, physical=True, vary=True),
+                parameter_spec("tau2", law.tau_f2 * contact.G_star, physical=True, vary=True),
+                parameter_spec("a1", law.a1, physical=False), parameter_spec("a2", law.a2, physical=False)]
     raise ValueError("model 'gw' fits the Hurtado-Kim or a constant friction stress; the contact has "
                      f"{type(law).__name__}")
 
