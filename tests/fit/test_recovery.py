@@ -264,3 +264,31 @@ def test_a_varied_offset_without_a_start_starts_at_the_contact_edge():
     held = fit_force_separation(data, "hertz", fix={"E_star_Pa": E_STAR, "d0_m": 0.0}, vary=["R_m"],
                                 start={"R_m": radius}, ci="wald")
     assert held.values["d0_m"] == 0.0  # not varied: still held at 0
+
+
+def test_a_fit_with_most_points_past_the_models_range_says_so_and_names_the_held_offset():
+    """Found by a user trial: a JKR retract curve fitted with its offset held at 0 had every
+    point past the branch, and reported a w whose 95 % interval missed the truth, with only
+    'N separation(s) lie beyond the model's range'.  The warning now says how little the fit
+    describes and names the held offset; the fit with the offset at its true value has no
+    such advice (its 8 points past the branch end are the data's own flat tail)."""
+    from asperity.fit import fit_force_separation, force_separation_data, get_model
+
+    truth = {"R_m": R, "w_J_m2": W, "E_star_Pa": E_STAR, "tau_Pa": 1e8, "d0_m": 1e-9}
+    d = np.linspace(0.0, 1.5e-9, 30)
+    F, clamped = get_model("jkr").force(d, truth)
+    assert clamped == 8  # the truth's flat tail past the branch end
+
+    def fit(shift, d0):
+        data = force_separation_data(d + shift, F, physical=True, name="curve")
+        return fit_force_separation(data, "jkr", fix={"E_star_Pa": E_STAR, "R_m": R, "d0_m": d0},
+                                    vary=["w_J_m2"], ci="wald")
+
+    def notes(res):
+        return [w for w in res.warnings if "beyond the model's range" in w]
+
+    every, most, right = notes(fit(5e-9, 0.0)), notes(fit(0.0, 0.0)), notes(fit(0.0, 1e-9))
+    assert len(every) == 1 and "30 separation(s)" in every[0] and "describes none of the data" in every[0]
+    assert "the offset d0_m is held (at 0): vary it" in every[0]
+    assert len(most) == 1 and "most of the points" in most[0] and "the offset d0_m is held (at 0)" in most[0]
+    assert len(right) == 1 and "8 separation(s)" in right[0] and "offset" not in right[0]

@@ -354,7 +354,8 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
                                 "compared with its friction at pull-off",
                     "force": "separation(s) lie beyond the model's range (past its stable branch); they were "
                              "compared with its force at the end of the branch"}.get(term.data.kind, "point(s) clamped")
-            warnings.append(f"{term.data.name}: at the best fit {clamped} {what}")
+            warnings.append(f"{term.data.name}: at the best fit {clamped} {what}"
+                            + _clamped_advice(term, clamped, problem.params))
         curves.append(curve)
         for k, v in term.model.derived(local).items():
             derived[k if len(problem.terms) == 1 else f"{k}_{i + 1}"] = v
@@ -380,3 +381,20 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
                      success=bool(result.success and not result.aborted), message=str(result.message),
                      report=lmfit.fit_report(result), profile_nfev=profile_nfev)
 
+
+def _clamped_advice(term, clamped: int, params) -> str:
+    """What to do when at least half of a data set's points were clamped (a user trial: a
+    force curve fitted with its offset held at 0 had every point past the branch, and a
+    confident w whose interval missed the truth)."""
+    n = len(term.data)
+    if 2 * clamped < n:
+        return ""
+    advice = (": every point, so the fit describes none of the data and its values and intervals mean nothing"
+              if clamped == n else ": most of the points, so its values and intervals describe little of the data")
+    offsets = [name for name, p in params.items() if name.split("_")[0] == "d0" and not p.vary and p.expr is None]
+    if term.data.kind == "force" and offsets:
+        advice += (f"; the offset {offsets[0]} is held (at {params[offsets[0]].value:.4g}): vary it "
+                   f"(vary=[..., '{offsets[0]}'], command line --vary ...,{offsets[0]}) or check the separations' zero")
+    elif term.data.kind == "force":
+        advice += "; check the separations' zero and sign"
+    return advice
