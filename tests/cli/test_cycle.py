@@ -92,6 +92,25 @@ def test_physical_routes_equal_the_library(capsys, argv, kwargs):
     assert code == 0 and out == expected
 
 
+@pytest.mark.parametrize("spelling", ["inf", "Inf", "infinity", "+inf", "infN/m", "inf N/m", "inf nN/nm", " inf "])
+def test_physical_infinite_stiffness_is_displacement_control_in_every_spelling(capsys, spelling):
+    """Found by a user trial: the help says '--stiffness ... default inf (displacement control)',
+    but with a physical contact 'inf' was refused for lacking a unit and 'infN/m' as not finite
+    (only 'inf N/m' worked)."""
+    code, out, err = run(capsys, "cycle", *AU, "--preload", "1mN", "--points", "4", "--stiffness", spelling,
+                         "--format", "csv", "--no-comments")
+    assert code == 0, err
+    assert out == au().cycle(preload=1e-3, n=4).to_csv() == au().cycle(preload=1e-3, n=4, stiffness=np.inf).to_csv()
+
+
+@pytest.mark.parametrize("spelling, needle", [("infkg", "'kg' is not a unit compatible with N/m"),
+                                              ("infx", "'x' is not a unit compatible with N/m"),
+                                              ("-inf", "--stiffness")])
+def test_physical_infinite_stiffness_with_a_wrong_unit_is_one_line(capsys, spelling, needle):
+    code, out, err = run(capsys, "cycle", *AU, "--preload", "1mN", "--stiffness", spelling)
+    assert one_line_error(code, err, needle) and out == ""
+
+
 def test_physical_json(capsys):
     code, out, _ = run(capsys, "cycle", *AU, "--preload", "1mN", "--points", "4", "--format", "json")
     got = strict_json(out)
