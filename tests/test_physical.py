@@ -166,11 +166,21 @@ def test_adhesion_switch(surface):
 
 
 def test_load_errors_are_stated_in_newtons(surface):
+    """A user trial: the limits were stated in N G b^2 units ('got min -0.443615 (loads in units
+    of N G b^2 = 0.00225421 N)' for -1 mN); now the limit and the load are in newtons."""
+    from asperity.load_control import LoadOutOfRange
+
     c = PhysicalContact("Au", surface)
     limit = c.pull_off().force
-    with pytest.raises(ValueError, match=r"N G b\^2 = [0-9.e-]+ N"):
-        c.load_curve(-2 * limit)
-    with pytest.raises(ValueError, match=r"P \(load\) must be > 0 without adhesion"):
+    with pytest.raises(LoadOutOfRange, match=r"^P \(load\) must be >= (\S+) N \(minus the pull-off force\): no "
+                       r"equilibrium under a smaller load; got min (\S+) N$") as info:
+        c.load_curve([1e-3, -2 * limit])
+    assert float(info.value.args[0].split(">= ")[1].split(" N")[0]) == pytest.approx(-limit, rel=1e-5)
+    assert info.value.got == -2 * limit and info.value.floor == pytest.approx(-limit, rel=1e-12)
+    with pytest.raises(ValueError, match=r"^P \(load\) must be > 0 N \(without adhesion, gamma = 0\): .* got min "
+                                         r"-0.001 N$"):
+        PhysicalContact("Au", surface, adhesion=False).load_curve([1e-3, -1e-3])
+    with pytest.raises(ValueError, match=r"got min 0 N$"):
         PhysicalContact("Au", surface, adhesion=False).load_curve(0.0)
     with pytest.raises(ValueError, match=r"d \(separation\) must lie in \[.*\] m"):
         c.separation_curve(1e-6)

@@ -56,6 +56,24 @@ def test_spring_in_newtons_per_metre(contact):
     json.dumps(pc.to_dict(), allow_nan=False)
 
 
+def test_an_unstable_closest_approach_is_stated_in_metres_and_newtons_per_metre(contact):
+    """A user trial: a physical cycle whose d_min the spring never holds was refused in the
+    model's units ('stiffness 0.64 ... d_min = -100'); now in m and N/m, the same numbers
+    scaled (the dimensionless refusal, from the same model, gives them in sigma)."""
+    from asperity.instrument import UnstableClosestApproach
+
+    sigma, fs = SURFACE.sigma_s, contact.force_scale
+    with pytest.raises(UnstableClosestApproach) as dim:
+        cycle(contact.alpha, contact.beta, contact.gamma, nu=contact.nu, h_over_b=contact.h_over_b,
+              d_min=1.0, n=40, stiffness=100.0 * sigma / fs)
+    assert "from d/sigma = " in str(dim.value) and "d_min = 1 is never" in str(dim.value)
+    with pytest.raises(UnstableClosestApproach, match=r"^the approach jumps into contact from d = \S+ m at stiffness "
+                       r"100 N/m: its end d_min = 2e-09 m is never a stable state") as phys:
+        contact.cycle(d_min="2nm", n=40, stiffness="100N/m")
+    assert phys.value.d_from == pytest.approx(dim.value.d_from * sigma, rel=1e-12)
+    assert phys.value.stiffness == pytest.approx(100.0, rel=1e-12) and phys.value.d_min == pytest.approx(2e-9)
+
+
 def test_lengths_and_forces_with_units(contact):
     a = contact.cycle(d_min="1nm", d_max="20nm", n=20, u_in="-0.01nm")
     b = contact.cycle(d_min=1e-9, d_max=2e-8, n=20, u_in=-1e-11)

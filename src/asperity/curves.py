@@ -23,7 +23,15 @@ from .asperity_law import ContactLaw, ModelParameters, check_law
 from .curve_result import COLUMNS, CurveResult
 from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .interaction import as_interaction
-from .load_control import PullOff, bracket_low, find_pull_off, invert_branch, stable_branch, start_separation
+from .load_control import (
+    LoadOutOfRange,
+    PullOff,
+    bracket_low,
+    find_pull_off,
+    invert_branch,
+    stable_branch,
+    start_separation,
+)
 from .multi_asperity import friction_coefficient, mean_pressure
 from .tabulation import D_MAX, Tabulation, check_separation
 
@@ -170,8 +178,7 @@ class Model:
         """All quantities at the stable separation for each load ``P``: :func:`load_curve` for this model."""
         P = _check_size(check_1d(P, "P"), "P")
         if not self.params.adhesive and np.any(P <= 0):
-            raise ValueError("P (load) must be > 0 without adhesion (gamma = 0); "
-                             f"got min {P.min():g}")
+            raise LoadOutOfRange(0.0, P.min(), "without adhesion, gamma = 0", exclusive=True)
         d_hi, P_max = self.d_search, float(P.max())
         d_lo = start_separation(self.params, P_max, d_hi)
         branch = stable_branch(self.tabulation(d_lo, d_hi), d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
@@ -188,8 +195,7 @@ class Model:
         floor = branch.P[-1]
         if P.min() < floor:
             what = "minus the pull-off force" if floor < 0 else f"the force at d/sigma = {branch.grid[-1]:.4g}"
-            raise ValueError(f"P (load) must be >= {floor:.6g} ({what}): no equilibrium under a smaller "
-                             f"load; got min {P.min():g}")
+            raise LoadOutOfRange(floor, P.min(), what, exclusive=False)
         d, sums = invert_branch(branch.tab, P, branch.grid, branch.P, branch.dP)
         sums[:, 1] = P  # solved for to rounding; report the load asked for
         # Interaction hook: the apparent separation is the local one less the uniform sinking.

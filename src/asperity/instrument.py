@@ -47,8 +47,8 @@ from ._validation import as_float_array, check_broadcast, check_finite_result, s
 from .cycle_search import bracketed_roots
 from .quadrature import gauss_legendre
 
-__all__ = ["Jump", "STIFFNESS_MIN", "check_stiffness", "base_displacement", "spring_path", "jump_energy",
-           "JUMP_RTOL", "JUMP_LEVELS", "JUMP_PANELS"]
+__all__ = ["Jump", "UnstableClosestApproach", "STIFFNESS_MIN", "check_stiffness", "base_displacement", "spring_path",
+           "jump_energy", "JUMP_RTOL", "JUMP_LEVELS", "JUMP_PANELS"]
 
 
 @dataclass(frozen=True)
@@ -86,6 +86,20 @@ class Jump:
 #: Softest spring handled, :math:`\bar k = k\sigma/(NGb^2)`: a softer one moves its base more than
 #: 1e100 sigma per unit load, and the base positions overflow double precision.
 STIFFNESS_MIN = 1e-100
+
+
+class UnstableClosestApproach(ValueError):
+    r"""The closest approach asked for is never a stable state through the spring: the approach
+    jumps into contact from ``d_from`` past it.  Attributes in the model's units (``d_from``,
+    ``d_min`` in :math:`\sigma`, ``stiffness`` in :math:`NGb^2/\sigma`), so that a caller in
+    physical units can say the same in metres and N/m."""
+
+    def __init__(self, d_from: float, d_min: float, stiffness: float, *, length: str = "", stiffness_unit: str = ""):
+        self.d_from, self.d_min, self.stiffness = float(d_from), float(d_min), float(stiffness)
+        d = "d" if length else "d/sigma"
+        super().__init__(f"the approach jumps into contact from {d} = {d_from:.6g}{length} at stiffness "
+                         f"{stiffness:.6g}{stiffness_unit}: its end d_min = {d_min:.6g}{length} is never a stable "
+                         "state; choose another d_min or give a preload")
 
 
 def check_stiffness(stiffness) -> float:
@@ -259,9 +273,7 @@ def spring_path(d, P, slope_left, slope_right, stiffness, force, *, branch, d_to
     if not visited[-1] and idx[-1] < pts.size - 1:
         a = idx[-1]
         if direction < 0:
-            raise ValueError(f"the approach jumps into contact from d/sigma = {pts[a]:.6g} at stiffness "
-                             f"{k:.6g}: its end d_min = {pts[-1]:.6g} is never a stable state; choose another "
-                             "d_min or give a preload")
+            raise UnstableClosestApproach(pts[a], pts[-1], k)
         x, P_to = _land_beyond(force, k, Z[a], pts[-1], d_top)
         jumps.append(Jump(branch, float(Z[a]), float(pts[a]), x, float(Ps[a]), P_to, math.nan))
         out_d.append(x)

@@ -36,8 +36,34 @@ from .branch_inversion import branch_guess, invert_branch
 from .pull_off_search import PullOff, find_pull_off
 from .tabulation import D_MAX, D_MIN, Tabulation, check_tabulation
 
-__all__ = ["PullOff", "Branch", "start_separation", "bracket_low", "force_grid", "stable_branch", "branch_guess",
-           "invert_branch", "find_pull_off"]
+__all__ = ["LoadOutOfRange", "PullOff", "Branch", "start_separation", "bracket_low", "force_grid", "stable_branch",
+           "branch_guess", "invert_branch", "find_pull_off"]
+
+
+class LoadOutOfRange(ValueError):
+    """A load with no equilibrium: below the least load the model carries.
+
+    A :class:`ValueError` whose message is in the model's units; its attributes let a caller
+    in physical units say the same in newtons.
+
+    Attributes
+    ----------
+    floor : float
+        The least load :math:`P/(NGb^2)`: 0 (exclusive) without adhesion, else minus the
+        pull-off force or the force at the end of the branch (inclusive).
+    got : float
+        The smallest load given.
+    what : str
+        What the floor is, in words.
+    exclusive : bool
+        True if the floor itself has no equilibrium (no adhesion: loads must be > 0).
+    """
+
+    def __init__(self, floor: float, got: float, what: str, *, exclusive: bool, units: str = ""):
+        self.floor, self.got, self.what, self.exclusive = float(floor), float(got), what, exclusive
+        bound = f"> {floor:g}{units}" if exclusive else f">= {floor:.6g}{units}"
+        super().__init__(f"P (load) must be {bound} ({what}): no equilibrium under a smaller load; "
+                         f"got min {got:g}{units}")
 
 
 class Branch(NamedTuple):

@@ -65,6 +65,7 @@ from .friction_stress import ConstantShear, FrictionLaw
 from .groups import work_of_adhesion_from_gamma
 from .heights import GAUSSIAN, HeightDistribution, check_heights
 from .interaction import interaction_for_surface
+from .load_control import LoadOutOfRange
 from .materials import Material, as_material
 from .multi_asperity import D_MAX, D_MIN
 from .physical_description import ContactDescription
@@ -262,6 +263,10 @@ class PhysicalContact(ContactGroups, ContactDescription, ContactPlasticity):
             P_bar = check_finite_result(P / self.force_scale, "P/(N G b^2)", P=P)
         try:
             curve = self.model.load_curve(P_bar)
+        except LoadOutOfRange as err:  # the same in newtons
+            fs = self.force_scale
+            raise LoadOutOfRange(err.floor * fs, float(np.min(P)), err.what, exclusive=err.exclusive,
+                                 units=" N") from None
         except ValueError as err:
             raise ValueError(f"{err} (loads in units of N G b^2 = {self.force_scale:.6g} N)") from None
         return self._physical(curve, P=P)

@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from ._validation import as_float_array, check_scalar_positive, scalar
-from .instrument import STIFFNESS_MIN
+from .instrument import STIFFNESS_MIN, UnstableClosestApproach
 from .physical import PhysicalContact
 from .tabulation import D_MIN
 from .units import to_si
@@ -186,5 +186,9 @@ def scaled_error(contact: PhysicalContact, err: ValueError) -> ValueError:
     -------
     ValueError
     """
+    if isinstance(err, UnstableClosestApproach):  # the same in metres and N/m
+        sigma = contact.surface.sigma_s
+        k = err.stiffness * contact.force_scale / sigma
+        return UnstableClosestApproach(err.d_from * sigma, err.d_min * sigma, k, length=" m", stiffness_unit=" N/m")
     return ValueError(f"{err} (separations in units of sigma_s = {contact.surface.sigma_s:.6g} m, forces in "
                       f"N G b^2 = {contact.force_scale:.6g} N)")
