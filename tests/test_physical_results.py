@@ -133,6 +133,25 @@ def test_the_above_100_percent_message_names_the_load_where_100_percent_is_passe
     assert f"above 10 % from P = {first10:.4g} N" in below.validity_warnings()[0]
 
 
+@pytest.mark.parametrize("sigma_s, noted", [(1e-10, False), (1e-9, True)])
+def test_the_pull_off_note_weighs_the_chance_that_no_asperity_touches(sigma_s, noted):
+    """A user trial: one summit (N = 1) touching with probability 0.99998 was noted as 'carried
+    by 1 asperities ... fewer than one, so ... most likely no pull-off'.  With N independent
+    summits none touches with probability (1 - n/N)^N: 2e-5 there (no note), 0.525 for the
+    rougher one (n = 0.475, noted with that probability)."""
+
+    contact = PhysicalContact("Au", Surface(sigma_s, 5e-8, 1e12, 1e-12))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        po = contact.pull_off()
+    notes = [str(w.message) for w in caught if "carried by" in str(w.message)]
+    n = float(contact.separation_curve([po.d]).contacts[0])  # contact.N == 1
+    assert contact.N == pytest.approx(1.0) and po.exists
+    assert (n < 0.5) == noted and len(notes) == noted
+    if noted:
+        assert f"carried by {n:.3g} asperities" in notes[0] and f"with probability {1 - n:.3g}" in notes[0]
+
+
 def test_a_pull_off_carried_by_less_than_one_asperity_is_noted():
     """Found by a review: a pull-off of 3e-23 N, carried by 6e-15 asperities on average, was
     reported like any other.  The note gives the expected number in contact at pull-off,
@@ -145,6 +164,8 @@ def test_a_pull_off_carried_by_less_than_one_asperity_is_noted():
         po = weak.pull_off()
     expected = weak.separation_curve([po.d]).contacts[0]
     assert f"carried by {expected:.3g} asperities" in str(record[0].message) and expected < 1.0
+    assert "has none in contact there with probability 1, so it would most likely show no pull-off" in \
+        str(record[0].message)
     strong = PhysicalContact("Au", Surface("2nm", "1um", "1e12/m^2", "1mm^2"))
     with warnings.catch_warnings():
         warnings.simplefilter("error", asperity.AsperityWarning)

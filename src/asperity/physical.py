@@ -295,11 +295,15 @@ class PhysicalContact(ContactGroups, ContactDescription, ContactPlasticity):
         if po.exists:
             at = self.model.separation_curve([po.d])
             area, touching = float(at.area[0]) * self.area_scale, float(at.contacts[0]) * self.N
-            if touching < 1.0:  # an expectation over many surfaces: one of them would show nothing
+            # an expectation over many surfaces: with N independent summits the number touching is
+            # binomial, and none touches with probability (1 - n/N)^N (e^-n for many summits)
+            none = math.exp(self.N * math.log1p(-min(touching / self.N, 1.0))) if touching < self.N else 0.0
+            if none > 0.5:
                 warnings.warn(AsperityWarning(
-                    f"the pull-off force, {po.force * self.force_scale:.3g} N, is carried by {touching:.3g} asperities "
-                    "in contact (an expectation over many such surfaces): fewer than one, so a real contact of this "
-                    "surface would most likely show no pull-off"), stacklevel=2)
+                    f"the pull-off force, {po.force * self.force_scale:.3g} N, is carried by {_below_one(touching)} "
+                    f"asperities in contact on average (an expectation over many such surfaces): a real contact of "
+                    f"this surface has none in contact there with probability {none:.3g}, so it would most likely "
+                    "show no pull-off"), stacklevel=2)
         warn_area_fraction(area / self.surface.area, stacklevel=2, where=" at pull-off")
         return PhysicalPullOff(force=po.force * self.force_scale, d=po.d * self.surface.sigma_s,
                                exists=po.exists, dimensionless=po, area=area, nominal_area=self.surface.area)
@@ -335,6 +339,15 @@ class PhysicalContact(ContactGroups, ContactDescription, ContactPlasticity):
         for message in result.validity_warnings():  # -> the caller of load_curve/separation_curve
             warnings.warn(message, AreaFractionWarning, stacklevel=3)
         return result
+
+
+def _below_one(x: float) -> str:
+    """``x`` < 1 with 3 significant digits, or as many more as keep it below 1 ('0.99998', not '1')."""
+    for digits in range(3, 18):
+        text = f"{x:.{digits}g}"
+        if float(text) < 1.0:
+            return text
+    return repr(x)
 
 
 def _adhesion_w(body: Material, adhesion: bool) -> float:
