@@ -49,6 +49,28 @@ def test_anisotropic_map_is_flagged(wide_band):
     assert any("anisotropic" in w for w in result.warnings)
 
 
+def test_a_wrong_height_unit_is_flagged_by_the_rms_slope(wide_band, tmp_path):
+    """A user trial: heights in nm read with --unit m gave sigma_s = 4.8 m on a 10 um scan, with
+    no note naming the unit.  Now an rms slope above 1 is noted, naming unit and size; the
+    slope equals the rms of NumPy's periodic central-difference gradient to 2 %."""
+    heights, _, _ = wide_band
+    n = heights.shape[0]
+    gy, gx = (np.roll(heights, -1, a) - np.roll(heights, 1, a) for a in (0, 1))
+    rms_slope = float(np.sqrt(np.mean((gx / (2 * DX)) ** 2 + (gy / (2 * DX)) ** 2)))
+    for scale, noted in ((1.0, rms_slope > 1.0), (0.5 / rms_slope, False), (3.0 / rms_slope, True)):
+        result = analyse_surface(ST.Topography(heights * scale, (n * DX, n * DX), periodic=True, unit="m"))
+        notes = [w for w in result.warnings if w.startswith("rms slope")]
+        assert len(notes) == noted
+        if noted:
+            slope = float(notes[0].split()[2])
+            assert slope == pytest.approx(rms_slope * scale, rel=0.02) and "--unit" in notes[0] and "--size" in notes[0]
+    np.save(tmp_path / "nm.npy", heights / DX * 10.0)  # slopes of 0.01 x rms_slope in nm over n x 1000 nm
+    good = analyse_surface(tmp_path / "nm.npy", physical_sizes=(f"{n}um", f"{n}um"), unit="nm")
+    wrong = analyse_surface(tmp_path / "nm.npy", physical_sizes=(f"{n}um", f"{n}um"), unit="m")
+    assert not any(w.startswith("rms slope") for w in good.warnings)
+    assert any(w.startswith("rms slope") for w in wrong.warnings)
+
+
 def test_groups_and_outputs(large_surface):
     result, _ = large_surface
     assert result.b == 2.5e-10

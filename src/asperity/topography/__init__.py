@@ -44,6 +44,7 @@ References
 
 from .analysis import (
     MAX_ANISOTROPY,
+    MAX_RMS_SLOPE,
     METHODS,
     MIN_ALPHA_N,
     MIN_RADIUS_PIXELS,
@@ -75,6 +76,7 @@ __all__ = [
     "MIN_RADIUS_PIXELS",
     "MIN_SUMMITS",
     "MAX_ANISOTROPY",
+    "MAX_RMS_SLOPE",
     "METHODS",
     "MIN_POINTS",
     "FLAT_RTOL",

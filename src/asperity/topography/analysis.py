@@ -22,6 +22,7 @@ References
 
 from __future__ import annotations
 
+import math
 import os
 import warnings
 from dataclasses import dataclass, field
@@ -50,6 +51,7 @@ __all__ = [
     "MIN_RADIUS_PIXELS",
     "MIN_SUMMITS",
     "MAX_ANISOTROPY",
+    "MAX_RMS_SLOPE",
     "METHODS",
 ]
 
@@ -70,6 +72,8 @@ MIN_RADIUS_PIXELS = 3.0
 MIN_SUMMITS = 30
 #: Largest ratio of the mean square slopes along x and y of an "isotropic" map.
 MAX_ANISOTROPY = 1.5
+#: Largest rms slope: the contact theories assume slopes well below 1.
+MAX_RMS_SLOPE = 1.0
 
 
 @dataclass(frozen=True)
@@ -236,7 +240,8 @@ def analyse_surface(path_or_topography, *, material=None, b=None, heights: bool 
         parameter :math:`\\alpha_N < 5` (Nayak's relations are unreliable); the
         resolution is too coarse (summits fewer than 5 pixels apart, or :math:`R`
         under 3 pixels); fewer than 30 summits; an anisotropic map (mean square slopes
-        along x and y differ by more than a factor 1.5); and, for a line scan, that
+        along x and y differ by more than a factor 1.5); an rms slope above 1 (a wrong
+        height unit or scan size, or a surface beyond the theories' small slopes); and, for a line scan, that
         summit values are inferred from one profile assuming isotropy (and the fitted
         heights are those of profile peaks); fewer than 20 summits for a height fit.
         ``heights`` holds the summit-height skewness, kurtosis and the ranked fits.
@@ -350,6 +355,10 @@ def _diagnose(spectral, detected, pixel, dim) -> list[str]:
     if spectral.anisotropy is not None and spectral.anisotropy > MAX_ANISOTROPY:
         out.append(f"anisotropic surface: mean square slopes along x and y differ by a factor "
                    f"{spectral.anisotropy:.3g}; the isotropic relations do not apply")
+    slope = math.sqrt(dim * spectral.m2) if spectral.m2 is not None else math.nan  # isotropic: m2 per direction
+    if slope > MAX_RMS_SLOPE:
+        out.append(f"rms slope {slope:.3g} (rms height {spectral.sigma:.3g} m): the contact theories assume slopes "
+                   "well below 1; check the height unit (unit=, --unit) and the scan size (physical_sizes=, --size)")
     if dim == 1:
         out.append("line scan: summit parameters are inferred from one profile assuming an "
                    "isotropic Gaussian surface; measure a map if possible")
