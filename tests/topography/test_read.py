@@ -30,7 +30,8 @@ def _check_map(topo, heights, height_scale=1e-9, sizes=(1.2e-6, 1.0e-6)):
 
 
 def test_read_handwritten_text_matrix(tmp_path):
-    heights = np.arange(72.0).reshape(8, 9)  # rows along y, columns along x
+    # rows along y, columns along x (not 0, 1, 2, ... along a line: that is noted as a header of indices)
+    heights = (0.5 * np.arange(72.0) - 3.0).reshape(8, 9)
     path = tmp_path / "afm.txt"
     path.write_text("# Channel: Height\n# Width: 9 µm\n# Height: 8 µm\n# Value units: nm\n"
                     + "\n".join(" ".join(f"{v:g}" for v in row) for row in heights) + "\n", encoding="utf-8")
@@ -346,3 +347,27 @@ def test_the_readers_notes_are_in_the_analysis_and_the_surface_json(tmp_path, ca
     assert code in (0, None)
     out, err = capsys.readouterr()
     assert json.loads(out)["warnings"] == result.to_dict()["warnings"] and "the pixels are" not in err
+
+
+@pytest.mark.parametrize("layout, where", [("header", "first line"), ("index", "first column"), ("plain", None)])
+def test_a_line_of_indices_read_as_heights_is_noted(tmp_path, layout, where):
+    """Found by a user trial: a text matrix with a header line '0 1 ... 31' (or a first column
+    of row numbers) is read as heights, and only the summit methods' disagreement hinted at it.
+    Now a note names the line (a note, not a repair: the file is read as it is)."""
+    h = np.random.default_rng(4).standard_normal((32, 40))
+    if layout == "header":
+        h = np.vstack([np.arange(40.0), h])
+    elif layout == "index":
+        h = np.hstack([np.arange(1.0, 33.0)[:, None], h])
+    np.savetxt(tmp_path / "m.txt", h)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        topo = read_topography(tmp_path / "m.txt", physical_sizes=("4um", "4um"), unit="nm")
+    notes = [str(w.message) for w in caught if "a header of indices" in str(w.message)]
+    assert topo.nb_grid_pts == h.shape[::-1]  # read as it is
+    if where is None:
+        assert notes == []
+    else:
+        start, end = ("0, 1, 2", 39) if layout == "header" else ("1, 2, 3", 32)
+        assert notes == [f"{tmp_path / 'm.txt'}: its {where} counts {start}, ... {end}: a header of indices read as "
+                         "heights?  Remove it from the file"]
