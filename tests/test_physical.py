@@ -175,7 +175,7 @@ def test_load_errors_are_stated_in_newtons(surface):
     with pytest.raises(LoadOutOfRange, match=r"^P \(load\) must be >= (\S+) N \(minus the pull-off force\): no "
                        r"equilibrium under a smaller load; got min (\S+) N$") as info:
         c.load_curve([1e-3, -2 * limit])
-    assert float(info.value.args[0].split(">= ")[1].split(" N")[0]) == pytest.approx(-limit, rel=1e-5)
+    assert float(str(info.value).split(">= ")[1].split(" N")[0]) == pytest.approx(-limit, rel=1e-5)
     assert info.value.got == -2 * limit and info.value.floor == pytest.approx(-limit, rel=1e-12)
     with pytest.raises(ValueError, match=r"^P \(load\) must be > 0 N \(without adhesion, gamma = 0\): .* got min "
                                          r"-0.001 N$"):
@@ -184,6 +184,39 @@ def test_load_errors_are_stated_in_newtons(surface):
         PhysicalContact("Au", surface, adhesion=False).load_curve(0.0)
     with pytest.raises(ValueError, match=r"d \(separation\) must lie in \[.*\] m"):
         c.separation_curve(1e-6)
+
+
+def test_a_floor_at_the_end_of_the_branch_is_stated_in_metres():
+    """A review: an adhesive contact without a pull-off (sigma_s = 100 nm) stated its floor as
+    'the force at d/sigma = 30.02'; now at d in metres, sigma_s times the model's."""
+    from asperity.load_control import LoadOutOfRange
+
+    contact = PhysicalContact("Au", Surface(1e-7, 1e-6, 1e12, 1e-6))
+    with pytest.raises(LoadOutOfRange) as model:
+        contact.model.load_curve([1.0, -1e-6 / contact.force_scale])
+    with pytest.raises(LoadOutOfRange, match=r"\(the force at d = (\S+) m\): .* got min -1e-06 N$") as phys:
+        contact.load_curve([1e-3, -1e-6])
+    assert model.value.d_end is not None and "d/sigma" in str(model.value)
+    assert phys.value.d_end == pytest.approx(model.value.d_end * 1e-7, rel=1e-12)
+    assert f"d = {phys.value.d_end:.4g} m" in str(phys.value)
+
+
+def test_the_refusals_with_numbers_pickle_and_copy():
+    """A review: their __init__ took more than the message, so pickle (a process pool sends
+    errors between processes) and copy failed with a TypeError instead of the message."""
+    import copy
+    import pickle
+
+    from asperity.instrument import UnstableClosestApproach
+    from asperity.load_control import LoadOutOfRange
+
+    for err in (LoadOutOfRange(-1.5, -2.0, "minus the pull-off force"),
+                LoadOutOfRange(0.0, -1e-3, "without adhesion, gamma = 0", True, " N"),
+                LoadOutOfRange(1e-9, -1.0, "the force at d = 6e-08 m", False, " N", 6e-8),
+                UnstableClosestApproach(3.2, 1.0, 10.0), UnstableClosestApproach(6e-9, 2e-9, 100.0, " m", " N/m")):
+        for back in (pickle.loads(pickle.dumps(err)), copy.copy(err), copy.deepcopy(err)):
+            assert type(back) is type(err) and str(back) == str(err) and back.args == err.args
+            assert isinstance(back, ValueError) and vars(back) == vars(err)
 
 
 def test_curve_export(surface, tmp_path):

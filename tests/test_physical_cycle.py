@@ -74,6 +74,19 @@ def test_an_unstable_closest_approach_is_stated_in_metres_and_newtons_per_metre(
     assert phys.value.stiffness == pytest.approx(100.0, rel=1e-12) and phys.value.d_min == pytest.approx(2e-9)
 
 
+@pytest.mark.parametrize("spelling", ["inf", "Infinity", "infN/m", "inf nN/nm", None, float("inf")])
+def test_an_infinite_stiffness_in_every_spelling_is_displacement_control(contact, spelling):
+    """A review: the command line took 'inf' and 'infN/m' but the library refused them."""
+    assert math.isinf(contact.cycle(preload=1e-3, n=4, stiffness=spelling).stiffness_N_m)
+
+
+@pytest.mark.parametrize("spelling, needle", [("infkg", "'kg' is not a unit compatible with N/m"),
+                                              ("-inf", "stiffness")])
+def test_an_infinite_stiffness_with_a_wrong_unit_is_refused(contact, spelling, needle):
+    with pytest.raises(ValueError, match=needle):
+        contact.cycle(preload=1e-3, n=4, stiffness=spelling)
+
+
 def test_lengths_and_forces_with_units(contact):
     a = contact.cycle(d_min="1nm", d_max="20nm", n=20, u_in="-0.01nm")
     b = contact.cycle(d_min=1e-9, d_max=2e-8, n=20, u_in=-1e-11)

@@ -82,7 +82,7 @@ def test_domain_error_becomes_nan_and_a_message():
     ds = asperity.sweep(alpha=0.003, beta=1000.0, gamma=[0.0, 1e-3, 1e-30], P=[-1.0, 10.0], scheduler="serial")
     assert ds.gamma.values.tolist() == [0.0, 1e-30, 1e-3]  # stored in increasing order
     msg = {g: ds.message.sel(gamma=g).item() for g in (0.0, 1e-3, 1e-30)}
-    assert "must be > 0 without adhesion" in msg[0.0]
+    assert "P (load) must be > 0 (without adhesion, gamma = 0)" in msg[0.0]
     assert msg[1e-3] == ""
     assert "lambda" in msg[1e-30] and "outside" in msg[1e-30]
     bad = ds.sel(gamma=[0.0, 1e-30])

@@ -194,8 +194,9 @@ class Model:
                                   else PullOff(0.0, float("nan"), False))
         floor = branch.P[-1]
         if P.min() < floor:
-            what = "minus the pull-off force" if floor < 0 else f"the force at d/sigma = {branch.grid[-1]:.4g}"
-            raise LoadOutOfRange(floor, P.min(), what, exclusive=False)
+            d_end = None if floor < 0 else float(branch.grid[-1])
+            what = "minus the pull-off force" if d_end is None else f"the force at d/sigma = {d_end:.4g}"
+            raise LoadOutOfRange(floor, P.min(), what, d_end=d_end)
         d, sums = invert_branch(branch.tab, P, branch.grid, branch.P, branch.dP)
         sums[:, 1] = P  # solved for to rounding; report the load asked for
         # Interaction hook: the apparent separation is the local one less the uniform sinking.

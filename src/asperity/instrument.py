@@ -94,12 +94,16 @@ class UnstableClosestApproach(ValueError):
     ``d_min`` in :math:`\sigma`, ``stiffness`` in :math:`NGb^2/\sigma`), so that a caller in
     physical units can say the same in metres and N/m."""
 
-    def __init__(self, d_from: float, d_min: float, stiffness: float, *, length: str = "", stiffness_unit: str = ""):
+    def __init__(self, d_from: float, d_min: float, stiffness: float, length: str = "", stiffness_unit: str = ""):
+        super().__init__(d_from, d_min, stiffness, length, stiffness_unit)  # the args: it pickles and copies
         self.d_from, self.d_min, self.stiffness = float(d_from), float(d_min), float(stiffness)
-        d = "d" if length else "d/sigma"
-        super().__init__(f"the approach jumps into contact from {d} = {d_from:.6g}{length} at stiffness "
-                         f"{stiffness:.6g}{stiffness_unit}: its end d_min = {d_min:.6g}{length} is never a stable "
-                         "state; choose another d_min or give a preload")
+        self.length, self.stiffness_unit = length, stiffness_unit
+
+    def __str__(self) -> str:
+        d = "d" if self.length else "d/sigma"
+        return (f"the approach jumps into contact from {d} = {self.d_from:.6g}{self.length} at stiffness "
+                f"{self.stiffness:.6g}{self.stiffness_unit}: its end d_min = {self.d_min:.6g}{self.length} is never "
+                "a stable state; choose another d_min or give a preload")
 
 
 def check_stiffness(stiffness) -> float:

@@ -57,13 +57,26 @@ class LoadOutOfRange(ValueError):
         What the floor is, in words.
     exclusive : bool
         True if the floor itself has no equilibrium (no adhesion: loads must be > 0).
+    units : str
+        Appended to the numbers in the message (``" N"``; empty in the model's units).
+    d_end : float or None
+        The separation whose force is the floor when that is the end of the branch, not a
+        pull-off (the caller's units).
+
+    The fields are the exception's ``args``, so it pickles and copies (a process pool sends it
+    between processes).
     """
 
-    def __init__(self, floor: float, got: float, what: str, *, exclusive: bool, units: str = ""):
-        self.floor, self.got, self.what, self.exclusive = float(floor), float(got), what, exclusive
-        bound = f"> {floor:g}{units}" if exclusive else f">= {floor:.6g}{units}"
-        super().__init__(f"P (load) must be {bound} ({what}): no equilibrium under a smaller load; "
-                         f"got min {got:g}{units}")
+    def __init__(self, floor: float, got: float, what: str, exclusive: bool = False, units: str = "",
+                 d_end: float | None = None):
+        super().__init__(floor, got, what, exclusive, units, d_end)
+        self.floor, self.got, self.what, self.exclusive = float(floor), float(got), what, bool(exclusive)
+        self.units, self.d_end = units, d_end
+
+    def __str__(self) -> str:
+        bound = f"> {self.floor:g}{self.units}" if self.exclusive else f">= {self.floor:.6g}{self.units}"
+        return (f"P (load) must be {bound} ({self.what}): no equilibrium under a smaller load; "
+                f"got min {self.got:g}{self.units}")
 
 
 class Branch(NamedTuple):

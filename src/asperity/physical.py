@@ -263,10 +263,11 @@ class PhysicalContact(ContactGroups, ContactDescription, ContactPlasticity):
             P_bar = check_finite_result(P / self.force_scale, "P/(N G b^2)", P=P)
         try:
             curve = self.model.load_curve(P_bar)
-        except LoadOutOfRange as err:  # the same in newtons
-            fs = self.force_scale
-            raise LoadOutOfRange(err.floor * fs, float(np.min(P)), err.what, exclusive=err.exclusive,
-                                 units=" N") from None
+        except LoadOutOfRange as err:  # the same in newtons and metres
+            d_end = None if err.d_end is None else err.d_end * self.surface.sigma_s
+            what = err.what if d_end is None else f"the force at d = {d_end:.4g} m"
+            raise LoadOutOfRange(err.floor * self.force_scale, float(np.min(P)), what, err.exclusive, " N",
+                                 d_end) from None
         except ValueError as err:
             raise ValueError(f"{err} (loads in units of N G b^2 = {self.force_scale:.6g} N)") from None
         return self._physical(curve, P=P)

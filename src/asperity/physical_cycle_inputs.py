@@ -27,7 +27,8 @@ from .physical import PhysicalContact
 from .tabulation import D_MIN
 from .units import to_si
 
-__all__ = ["length_input", "cycle_stiffness", "cycle_u_in", "check_cycle_separations", "scaled_error"]
+__all__ = ["length_input", "infinite_stiffness", "cycle_stiffness", "cycle_u_in", "check_cycle_separations",
+           "scaled_error"]
 
 
 def length_input(value, name: str, required: bool = False):
@@ -56,6 +57,45 @@ def length_input(value, name: str, required: bool = False):
     return None if value is None else float(scalar(as_float_array(to_si(value, "m", name), name), name))
 
 
+def infinite_stiffness(text: str, name: str = "stiffness") -> bool:
+    """Whether ``text`` spells an infinite stiffness (displacement control), with or without a
+    stiffness unit: ``'inf'``, ``'Infinity'``, ``'+inf'``, ``'infN/m'``, ``'inf nN/nm'``.
+
+    Parameters
+    ----------
+    text : str
+        The stiffness as written.
+    name : str
+        Its name, for the message.
+
+    Returns
+    -------
+    bool
+        True for an infinite stiffness; False for anything else (a finite value, ``'-inf'``).
+
+    Raises
+    ------
+    TypeError
+        For ``text`` that is not a string.
+    ValueError
+        For infinity followed by something that is not a unit of stiffness (``'infkg'``).
+    """
+    if not isinstance(text, str):
+        raise TypeError(f"{name} must be a string here, got {type(text).__name__} {text!r}")
+    stripped = text.strip()
+    for word in ("+infinity", "infinity", "+inf", "inf"):
+        if stripped.lower().startswith(word):
+            rest = stripped[len(word):].strip()
+            if rest:  # a unit: it must be one of stiffness
+                try:
+                    to_si(f"1 {rest}", "N/m", name)
+                except ValueError:
+                    raise ValueError(f"{name} = {text!r}: {rest!r} is not a unit compatible with N/m (e.g. 'inf N/m', "
+                                     "or 'inf' alone: displacement control)") from None
+            return True
+    return False
+
+
 def cycle_stiffness(contact: PhysicalContact, stiffness) -> float:
     r"""The spring's stiffness in the model's units, :math:`\bar k = k\sigma_s/(NGb^2)`.
 
@@ -64,7 +104,8 @@ def cycle_stiffness(contact: PhysicalContact, stiffness) -> float:
     contact : PhysicalContact
         The contact (its :math:`\sigma_s` and :math:`NGb^2`).
     stiffness : float, str, pint.Quantity or None
-        N/m, > 0; None or infinity: displacement control.
+        N/m, > 0; None or infinity (in any spelling of :func:`infinite_stiffness`):
+        displacement control.
 
     Returns
     -------
@@ -77,7 +118,7 @@ def cycle_stiffness(contact: PhysicalContact, stiffness) -> float:
         For a stiffness that is not positive, or whose :math:`\bar k` falls below
         :data:`asperity.instrument.STIFFNESS_MIN` or overflows.
     """
-    if stiffness is None:
+    if stiffness is None or (isinstance(stiffness, str) and infinite_stiffness(stiffness)):
         return math.inf
     if not isinstance(stiffness, bool):  # inf (displacement control) in any spelling: 'inf N/m', a Quantity
         try:

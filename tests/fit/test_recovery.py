@@ -292,3 +292,27 @@ def test_a_fit_with_most_points_past_the_models_range_says_so_and_names_the_held
     assert "the offset d0_m is held (at 0): vary it" in every[0]
     assert len(most) == 1 and "most of the points" in most[0] and "the offset d0_m is held (at 0)" in most[0]
     assert len(right) == 1 and "8 separation(s)" in right[0] and "offset" not in right[0]
+
+
+def test_in_a_joint_fit_the_clamped_advice_names_the_data_sets_own_offset():
+    """A review: the advice named any held d0 of the problem; in a joint fit with one offset
+    per data set it named the other (right) set's held d0_m_2 for a set whose own d0_m_1
+    was varied.  Now each set's note names only its own offset, and only if held."""
+    from asperity.fit import force_separation_data, get_model
+    from asperity.fit.joint import fit_joint
+
+    truth = {"R_m": R, "w_J_m2": W, "E_star_Pa": E_STAR, "tau_Pa": 1e8, "d0_m": 1e-9}
+    d = np.linspace(0.0, 1.5e-9, 30)
+    F, _ = get_model("jkr").force(d, truth)
+    shifted = force_separation_data(d + 5e-9, F, physical=True, name="shifted")  # every point past the branch
+    good = force_separation_data(d, F, physical=True, name="good")
+    kws = {"shared": ["w_J_m2", "R_m", "E_star_Pa"], "ci": "wald"}
+    varied = fit_joint([shifted, good], "jkr", fix={"E_star_Pa": E_STAR, "R_m": R, "d0_m_2": 1e-9},
+                       vary=["w_J_m2", "d0_m_1"], start={"d0_m_1": 0.0}, **kws)
+    note = [w for w in varied.warnings if w.startswith("shifted:")]
+    assert len(note) == 1 and "every point" in note[0] and "offset" not in note[0] and "separations' zero" in note[0]
+    held = fit_joint([shifted, good], "jkr", fix={"E_star_Pa": E_STAR, "R_m": R, "d0_m_1": 0.0, "d0_m_2": 1e-9},
+                     vary=["w_J_m2"], **kws)
+    note = [w for w in held.warnings if w.startswith("shifted:")]
+    assert len(note) == 1 and "the offset d0_m_1 is held (at 0)" in note[0]
+    assert not any("offset" in w for w in held.warnings if w.startswith("good:"))

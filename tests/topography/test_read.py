@@ -349,7 +349,8 @@ def test_the_readers_notes_are_in_the_analysis_and_the_surface_json(tmp_path, ca
     assert json.loads(out)["warnings"] == result.to_dict()["warnings"] and "the pixels are" not in err
 
 
-@pytest.mark.parametrize("layout, where", [("header", "first line"), ("index", "first column"), ("plain", None)])
+@pytest.mark.parametrize("layout, where", [("header", "first line"), ("index", "first column"), ("both", "first line"),
+                                           ("plain", None)])
 def test_a_line_of_indices_read_as_heights_is_noted(tmp_path, layout, where):
     """Found by a user trial: a text matrix with a header line '0 1 ... 31' (or a first column
     of row numbers) is read as heights, and only the summit methods' disagreement hinted at it.
@@ -359,6 +360,9 @@ def test_a_line_of_indices_read_as_heights_is_noted(tmp_path, layout, where):
         h = np.vstack([np.arange(40.0), h])
     elif layout == "index":
         h = np.hstack([np.arange(1.0, 33.0)[:, None], h])
+    elif layout == "both":  # a spreadsheet's: a corner cell 0, a header 0 ... 39, an index column 0 ... 31
+        h = np.vstack([np.r_[0.0, np.arange(39.0)], np.hstack([np.arange(32.0)[:, None], h[:, 1:]])])
+        assert h[0, :3].tolist() == [0.0, 0.0, 1.0] and h[:3, 0].tolist() == [0.0, 0.0, 1.0]
     np.savetxt(tmp_path / "m.txt", h)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -368,6 +372,6 @@ def test_a_line_of_indices_read_as_heights_is_noted(tmp_path, layout, where):
     if where is None:
         assert notes == []
     else:
-        start, end = ("0, 1, 2", 39) if layout == "header" else ("1, 2, 3", 32)
+        start, end = {"header": ("0, 1, 2", 39), "index": ("1, 2, 3", 32), "both": ("0, 1, 2", 38)}[layout]
         assert notes == [f"{tmp_path / 'm.txt'}: its {where} counts {start}, ... {end}: a header of indices read as "
                          "heights?  Remove it from the file"]

@@ -69,9 +69,10 @@ def _number(text: str | None, option: str, physical: bool):
     if text is None:
         return None
     if physical and option == "stiffness":
-        infinite = _infinite_stiffness(text)
-        if infinite is not None:
-            return infinite
+        from ..physical_cycle_inputs import infinite_stiffness
+
+        if infinite_stiffness(text, "--stiffness"):
+            return float("inf")
     if physical:
         return quantity(text, OPTIONS[option][1], f"--{option.replace('_', '-')}")
     try:
@@ -79,23 +80,6 @@ def _number(text: str | None, option: str, physical: bool):
     except ValueError:
         raise UsageError(f"--{option.replace('_', '-')}: expected a number, got {text!r} (quantities with units "
                          "need a physical contact: --material ...)") from None
-
-
-def _infinite_stiffness(text: str) -> float | None:
-    """inf for '--stiffness inf' (the help's default, displacement control) with or without a
-    stiffness unit ('inf', 'infN/m', 'inf N/m', 'Infinity'); None for anything else."""
-    stripped = text.strip()
-    for word in ("+infinity", "infinity", "+inf", "inf"):
-        if stripped.lower().startswith(word):
-            rest = stripped[len(word):].strip()
-            if rest:  # a unit: it must be a stiffness unit
-                try:
-                    quantity(f"1 {rest}", "N/m", "--stiffness")
-                except ValueError:
-                    raise UsageError(f"--stiffness = {text!r}: {rest!r} is not a unit compatible with N/m "
-                                     "(e.g. 'inf N/m', or 'inf' alone: displacement control)") from None
-            return float("inf")
-    return None
 
 
 def _rows(result) -> list[dict]:

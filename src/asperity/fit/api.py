@@ -17,7 +17,8 @@ and ranks them by AIC.  They take the same options:
     ``{name: (lo, hi)}`` in linear units (None for open); they must contain the start.
 ``expr``
     ``{name: "expression"}``: tie a parameter to others (lmfit syntax, linear names), e.g.
-    ``{"tau2_Pa": "tau1_Pa"}`` for a constant shear strength.
+    ``{"tau2_Pa": "tau1_Pa / 30"}`` for the Hurtado-Kim strengths in a fixed ratio (a
+    contact with a constant shear strength has the one ``tau_Pa``).
 ``weights``
     ``'auto'`` (default), ``'column'``, ``'relative'`` or ``'none'`` (see
     :mod:`asperity.fit.engine`).

@@ -387,14 +387,16 @@ def _clamped_advice(term, clamped: int, params) -> str:
     force curve fitted with its offset held at 0 had every point past the branch, and a
     confident w whose interval missed the truth)."""
     n = len(term.data)
-    if 2 * clamped < n:
+    if 2 * clamped <= n:
         return ""
     advice = (": every point, so the fit describes none of the data and its values and intervals mean nothing"
               if clamped == n else ": most of the points, so its values and intervals describe little of the data")
-    offsets = [name for name, p in params.items() if name.split("_")[0] == "d0" and not p.vary and p.expr is None]
-    if term.data.kind == "force" and offsets:
-        advice += (f"; the offset {offsets[0]} is held (at {params[offsets[0]].value:.4g}): vary it "
-                   f"(vary=[..., '{offsets[0]}'], command line --vary ...,{offsets[0]}) or check the separations' zero")
+    # this data set's own offset (in a joint fit its copy, d0_m_2, or the shared d0_m)
+    offset = next((term.names[local] for local in ("d0_m", "d0") if local in term.names), None)
+    held = offset is not None and not params[offset].vary and params[offset].expr is None
+    if term.data.kind == "force" and held:
+        advice += (f"; the offset {offset} is held (at {params[offset].value:.4g}): vary it "
+                   f"(vary=[..., '{offset}'], command line --vary ...,{offset}) or check the separations' zero")
     elif term.data.kind == "force":
         advice += "; check the separations' zero and sign"
     return advice

@@ -126,20 +126,22 @@ def read_topography(path, *, physical_sizes=None, unit=None, channel_index=None,
 
 
 def _note_index_lines(topo, name: str) -> None:
-    """A note when a map's first or last line or column counts 0, 1, 2, ... or 1, 2, 3, ...: a
-    header of column numbers (or a column of row numbers) read as heights (a user trial: a
+    """A note when a map's first or last line or column counts 0, 1, 2, ... or 1, 2, 3, ... (from
+    its first or second value): a header of column numbers (or a column of row numbers) read
+    as heights (a user trial: a
     text matrix with the line '0 1 ... 255' on top gave a 256 x 257 map and R 133 times too
     small, flagged only by the methods' disagreement)."""
     h = np.ma.getdata(topo.heights())
     for axis, what in ((1, "line"), (0, "column")):  # a text matrix's lines are along the second axis
         for index, where in ((0, "first"), (-1, "last")):
-            values = np.take(h, index, axis=axis)
-            if values.size >= 8 and any(np.array_equal(values, np.arange(start, start + values.size))
-                                        for start in (0, 1)):
-                warnings.warn(f"{name}: its {where} {what} counts {values[0]:g}, {values[1]:g}, {values[2]:g}, ... "
-                              f"{values[-1]:g}: a header of indices read as heights?  Remove it from the file",
-                              AsperityWarning, stacklevel=3)
-                return
+            line = np.take(h, index, axis=axis)
+            for values in (line, line[1:]):  # the whole line, or after a corner cell (a header and an index)
+                if values.size >= 8 and any(np.array_equal(values, np.arange(start, start + values.size))
+                                            for start in (0, 1)):
+                    warnings.warn(f"{name}: its {where} {what} counts {values[0]:g}, {values[1]:g}, {values[2]:g}, "
+                                  f"... {values[-1]:g}: a header of indices read as heights?  Remove it from the file",
+                                  AsperityWarning, stacklevel=3)
+                    return
 
 
 def _note_pixel_shape(topo, name: str) -> None:
