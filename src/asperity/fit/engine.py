@@ -130,6 +130,31 @@ class Term:
     def local(self, values: dict) -> dict:
         return {loc: values[glob] for loc, glob in self.names.items()}
 
+    def clamped_note(self, clamped: int, params: dict) -> str:
+        """The fit's warning for ``clamped`` points of this data set that the model could not
+        reach (loads below its pull-off, separations past its branch).  When that is at least
+        half of them it says how little the fit describes, and for a force curve names this
+        set's own offset if it is held (a user trial: a force curve fitted with its offset held
+        at 0 had every point past the branch and a confident w whose interval missed the truth)."""
+        what = {"friction": "load(s) lie below the model's pull-off load (no contact there); they were compared "
+                            "with its friction at pull-off",
+                "force": "separation(s) lie beyond the model's range (past its stable branch); they were compared "
+                         "with its force at the end of the branch"}.get(self.data.kind, "point(s) clamped")
+        note = f"{self.data.name}: at the best fit {clamped} {what}"
+        n = len(self.data)
+        if 2 * clamped <= n:
+            return note
+        note += (": every point, so the fit describes none of the data and its values and intervals mean nothing"
+                 if clamped == n else ": most of the points, so its values and intervals describe little of the data")
+        if self.data.kind != "force":
+            return note
+        # this data set's own offset (in a joint fit its copy, d0_m_2, or the shared d0_m)
+        offset = next((self.names[local] for local in ("d0_m", "d0") if local in self.names), None)
+        if offset is not None and not params[offset].vary and params[offset].expr is None:
+            return note + (f"; the offset {offset} is held (at {params[offset].value:.4g}): vary it (vary=[..., "
+                           f"'{offset}'], command line --vary ...,{offset}) or check the separations' zero")
+        return note + "; check the separations' zero and sign"
+
     def predict(self, local: dict, data: Dataset | None = None):
         """(model values at the data points, number clamped), cached by the parameter values."""
         data = self.data if data is None else data

@@ -350,12 +350,7 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
         local = term.local(values)
         fitted.append(np.asarray(y_model, dtype=float))
         if clamped:
-            what = {"friction": "load(s) lie below the model's pull-off load (no contact there); they were "
-                                "compared with its friction at pull-off",
-                    "force": "separation(s) lie beyond the model's range (past its stable branch); they were "
-                             "compared with its force at the end of the branch"}.get(term.data.kind, "point(s) clamped")
-            warnings.append(f"{term.data.name}: at the best fit {clamped} {what}"
-                            + _clamped_advice(term, clamped, problem.params))
+            warnings.append(term.clamped_note(clamped, problem.params))
         curves.append(curve)
         for k, v in term.model.derived(local).items():
             derived[k if len(problem.terms) == 1 else f"{k}_{i + 1}"] = v
@@ -380,23 +375,3 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
                      derived=derived, nfev=nfev, model_evaluations=sum(t.evaluations for t in problem.terms),
                      success=bool(result.success and not result.aborted), message=str(result.message),
                      report=lmfit.fit_report(result), profile_nfev=profile_nfev)
-
-
-def _clamped_advice(term, clamped: int, params) -> str:
-    """What to do when at least half of a data set's points were clamped (a user trial: a
-    force curve fitted with its offset held at 0 had every point past the branch, and a
-    confident w whose interval missed the truth)."""
-    n = len(term.data)
-    if 2 * clamped <= n:
-        return ""
-    advice = (": every point, so the fit describes none of the data and its values and intervals mean nothing"
-              if clamped == n else ": most of the points, so its values and intervals describe little of the data")
-    # this data set's own offset (in a joint fit its copy, d0_m_2, or the shared d0_m)
-    offset = next((term.names[local] for local in ("d0_m", "d0") if local in term.names), None)
-    held = offset is not None and not params[offset].vary and params[offset].expr is None
-    if term.data.kind == "force" and held:
-        advice += (f"; the offset {offset} is held (at {params[offset].value:.4g}): vary it "
-                   f"(vary=[..., '{offset}'], command line --vary ...,{offset}) or check the separations' zero")
-    elif term.data.kind == "force":
-        advice += "; check the separations' zero and sign"
-    return advice
