@@ -318,6 +318,8 @@ SKIP = {
     "asperity.sweeps.spec.make_spec": "called by sweep() (fuzzed) with the arguments it checked",
     "asperity.sweeps.spec.default_chunk_sets": "called by make_spec with the number of sets it counted",
     "asperity.validation.bem.subsample": "called by validate_surface (fuzzed) with the grid it checked",
+    "asperity.validation.bem.with_periodicity": "called by validate_surface and bem_contact (fuzzed) with the map "
+                                                "they read; tests/validation/test_bem.py tests it",
     # Sweep workers and stores: called by sweep() with the spec it validated.
     **{name: "a part of asperity.sweep, called with the SweepSpec it validated (sweep and make_spec are fuzzed)"
        for name in ("asperity.sweeps.compute.compute_chunk", "asperity.sweeps.compute.compute_set",

@@ -50,7 +50,7 @@ from ..physical import PhysicalContact
 from ..quantities import VALIDATION_COLUMNS
 from ..topography import analyse_surface, read_topography
 from ..topography.summits import plain
-from .bem import DEFAULT_TOLERANCE, BemCurve, bem_contact, check_loads, subsample
+from .bem import DEFAULT_TOLERANCE, BemCurve, bem_contact, check_loads, subsample, with_periodicity
 from .models import AREA_METHODS, check_models, model_columns, run_icha, run_slope_law
 from .notes import comparison_notes, model_warning_notes
 from .plot import plot_validation
@@ -260,6 +260,7 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     topo, source = _topography(surface, read_kwargs)
     analysis, t_analysis = None, 0.0
     try:
+        topo = with_periodicity(topo, periodic)  # levelling, summits at the edges, ICHA: as the solve's
         full = topo if topo.unit in (None, "m") else topo.to_unit("m")
         topo = subsample(full, grid)
         shape = tuple(int(n) for n in topo.nb_grid_pts)
