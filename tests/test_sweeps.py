@@ -4,6 +4,7 @@ import os
 import signal
 import sys
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -327,6 +328,44 @@ def test_the_local_cluster_runs_its_workers_with_asperity_settings(serial):
     finally:
         client.close()
         cluster.close()
+
+
+INTERRUPTED_START = """
+import signal, sys
+import distributed
+from asperity.sweeps import run
+
+def interrupt(signum, frame):
+    raise KeyboardInterrupt
+
+real_init = distributed.LocalCluster.__init__
+
+def starting(self, *args, **kwargs):  # Ctrl-C 0.3 s into the cluster's start (it takes seconds)
+    signal.setitimer(signal.ITIMER_REAL, 0.3)
+    real_init(self, *args, **kwargs)
+
+signal.signal(signal.SIGALRM, interrupt)
+distributed.LocalCluster.__init__ = starting
+try:
+    run._local_cluster()
+except KeyboardInterrupt:
+    print("interrupted while starting")
+"""
+
+
+def test_an_interrupt_while_the_local_cluster_starts_leaves_no_exit_traceback(tmp_path):
+    """Found by a user trial: Ctrl-C or SIGTERM in the first seconds of a sweep printed
+    'asperity: interrupted', then 28 lines of distributed's exit hook failing to close the
+    half-built cluster ('AssertionError: Status.init')."""
+    import subprocess
+    import sys
+
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(Path(asperity.__file__).parents[1]),
+                                                       os.environ.get("PYTHONPATH", "")]))
+    done = subprocess.run([sys.executable, "-c", INTERRUPTED_START], capture_output=True, text=True, timeout=120,
+                          env=env, cwd=tmp_path)
+    assert done.stdout.strip() == "interrupted while starting", (done.stdout, done.stderr)
+    assert "Traceback" not in done.stderr and "Exception ignored" not in done.stderr, done.stderr
 
 
 def test_store_bytes_is_at_least_what_the_results_hold(serial):

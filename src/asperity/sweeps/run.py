@@ -117,11 +117,20 @@ def local_worker_settings():
 def _local_cluster():
     distributed = require("distributed", purpose="sweeps on Dask")
     n = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (os.cpu_count() or 1)
-    with local_worker_settings():
-        # config=: each nanny hands it to every worker it starts, restarts included
-        cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                           dashboard_address=":0", silence_logs=logging.ERROR,
-                                           config={"distributed.worker.profile.enabled": False})
+    before = set(distributed.SpecCluster._instances)
+    try:
+        with local_worker_settings():
+            # config=: each nanny hands it to every worker it starts, restarts included
+            cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                               dashboard_address=":0", silence_logs=logging.ERROR,
+                                               config={"distributed.worker.profile.enabled": False})
+    except BaseException:
+        # Ctrl-C or SIGTERM while the cluster starts (a user trial): a half-built cluster would be
+        # closed again by distributed's exit hook, which fails on its state with a 28-line
+        # traceback after 'asperity: interrupted'; its worker processes end with this one.
+        for half_built in set(distributed.SpecCluster._instances) - before:
+            half_built.shutdown_on_close = False
+        raise
     return cluster, distributed.Client(cluster)
 
 
