@@ -148,8 +148,13 @@ class NetCDFStore(MemoryStore):
             # CF: the parameters of a list of points are auxiliary coordinates of every variable.
             aux = " ".join(k for k, (dims, _) in _coordinates(spec).items() if dims != (k,))
             extra = {"coordinates": aux} if aux else {}
+            # Stored in the sweep's own chunks: HDF5 then allocates a chunk when it is written (a user
+            # trial: contiguous variables were allocated and NaN-filled in full before the first
+            # result, 4.6 GB in 10 s for 1e8 sets, a 27 GB .partial after a minute).
+            chunk = tuple(s.stop - s.start for s in spec.chunk_region(0))
             for k, (meaning, unit, where) in spec.variables().items():
-                var = ds.createVariable(k, "f8", _var_dims(spec, where), fill_value=np.nan)
+                sizes = chunk + ((spec.values.size,) if where == "curve" else ())
+                var = ds.createVariable(k, "f8", _var_dims(spec, where), fill_value=np.nan, chunksizes=sizes)
                 var.setncatts({"long_name": meaning, "units": unit, **extra})
             var = ds.createVariable("message", str, spec.dims)
             var.setncatts({"long_name": "why the set was not computed ('' if it was)", **extra})
