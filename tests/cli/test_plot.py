@@ -222,7 +222,7 @@ def test_heat_map_names_the_grid_value_it_draws(capsys, tmp_path, sweep_file):
     code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=9",
                        "-o", str(path))
     assert code == 0 and err.strip() == ("asperity: note: --at P=9.0: the sweep has no P = 9.0; its nearest grid "
-                                         "value, 10.0, is drawn")
+                                         "value (in decades), 10.0, is drawn")
     code, _, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "mu", "--at", "P=10",
                        "-o", str(path))
     assert code == 0 and err == ""
@@ -307,3 +307,77 @@ def test_heat_map_title_names_what_grey_means(sweep_file, tmp_path, monkeypatch)
     plot.heat_map(ds, "alpha", "gamma", "mu", {"P": 1.0}, str(tmp_path / "d.png"), "png")
     assert titles == ["grey: <= 0", "grey: <= 0 or not computed (see message)",
                       "P = 1, grey: not computed (see message)", "P = 1"]
+
+
+@pytest.fixture(scope="module")
+def material_sweep(tmp_path_factory):
+    pytest.importorskip("xarray")
+    pytest.importorskip("netCDF4")
+    import asperity
+
+    out = tmp_path_factory.mktemp("materials") / "phys.nc"
+    asperity.sweep(material=["Au", "Si"], sigma_s=np.array([1e-9, 2e-9, 4e-9]), R=1e-6, eta=1e12, area=1e-6,
+                   w=0.0, P=np.array([1e-3, 1e-2, 1e-1]), out=str(out), scheduler="serial").close()
+    return out
+
+
+def _drawn(monkeypatch):
+    """The heat maps saved: (cell values, x tick labels, title) of each."""
+    from matplotlib.figure import Figure
+
+    seen = []
+    savefig = Figure.savefig
+
+    def capture(fig, *args, **kwargs):
+        ax = fig.axes[0]
+        seen.append((np.ma.filled(ax.collections[0].get_array(), np.nan).reshape(-1),
+                     [t.get_text() for t in ax.get_xticklabels()], ax.get_title()))
+        return savefig(fig, *args, **kwargs)
+    monkeypatch.setattr(Figure, "savefig", capture)
+    return seen
+
+
+def test_a_sweep_over_materials_is_drawn_with_one_cell_per_material(capsys, tmp_path, material_sweep, monkeypatch):
+    """Found by a user trial: a physical sweep over materials could not be drawn: '--x material'
+    failed converting 'Au' to a number and '--at material=Au' was refused as no number."""
+    pytest.importorskip("matplotlib")
+    import xarray as xr
+
+    seen = _drawn(monkeypatch)
+    with xr.open_dataset(material_sweep) as ds:
+        ds = ds.load()
+    code, out, err = run(capsys, "plot", str(material_sweep), "--x", "material", "--y", "sigma_s", "--z", "mu",
+                         "--at", "P_N=0.01", "-o", str(tmp_path / "a.png"))
+    assert code == 0, err
+    values, ticks, title = seen[-1]
+    np.testing.assert_array_equal(values, ds.mu.sel(P_N=0.01).transpose("sigma_s", "material").values.ravel())
+    assert ticks == ["Au", "Si"] and title == "P_N = 0.01"
+    code, out, err = run(capsys, "plot", str(material_sweep), "--x", "P_N", "--y", "sigma_s", "--z", "area_m2",
+                         "--at", "material=Si", "-o", str(tmp_path / "b.png"))
+    assert code == 0, err
+    values, _, title = seen[-1]
+    np.testing.assert_array_equal(values, ds.area_m2.sel(material="Si").transpose("sigma_s", "P_N").values.ravel())
+    assert title == "material = Si"
+
+
+@pytest.mark.parametrize("at, needle", [("material=Cu", "--at: material=Cu: the sweep's material values are Au, Si"),
+                                        ("sigma_s=Au", "--at: sigma_s takes a number"),
+                                        ("material=", "NAME=VALUE")])
+def test_a_wrong_name_for_a_dimension_of_names_is_one_line(capsys, tmp_path, material_sweep, at, needle):
+    pytest.importorskip("matplotlib")
+    axes = ["--x", "P_N", "--y", "material"] if at.startswith("sigma_s") else ["--x", "P_N", "--y", "sigma_s"]
+    code, out, err = run(capsys, "plot", str(material_sweep), *axes, "--z", "area_m2", "--at", at,
+                         "-o", str(tmp_path / "c.png"))
+    assert one_line_error(code, err, needle) and not (tmp_path / "c.png").exists()
+
+
+def test_at_picks_the_nearest_grid_value_in_decades_on_a_log_axis(capsys, tmp_path, sweep_file, monkeypatch):
+    """A user trial: '--at P=5' on the grid P = 1, 10 drew P = 1 (nearer on a linear scale);
+    on a log axis 5 is nearer 10 (0.30 decades against 0.70).  3 is nearer 1 (0.48 against 0.52)."""
+    pytest.importorskip("matplotlib")
+    seen = _drawn(monkeypatch)
+    for wanted, drawn in (("5", "10"), ("3", "1")):
+        code, out, err = run(capsys, "plot", str(sweep_file), "--x", "alpha", "--y", "gamma", "--z", "mu", "--at",
+                             f"P={wanted}", "-o", str(tmp_path / "d.png"))
+        assert code == 0 and seen[-1][2] == f"P = {drawn}"
+        assert f"its nearest grid value (in decades), {float(drawn)!r}, is drawn" in err

@@ -32,12 +32,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--y", required=True, help="dimension on the vertical axis (e.g. gamma)")
     parser.add_argument("--z", required=True, help="variable drawn in colour (e.g. pull_off, mu)")
     parser.add_argument("--at", metavar="NAME=VALUE", action="append", default=[],
-                        help="fix another dimension at the value nearest VALUE (repeatable), e.g. P=10")
+                        help="fix another dimension at the value nearest VALUE (in decades on a log axis; "
+                             "repeatable), e.g. P=10, or a material by name, e.g. material=Au; a dimension of "
+                             "materials can also be --x or --y (one column per material)")
     parser.add_argument("-o", "--output", metavar="FILE.png", type=output_file, default=None,
                         help="image file (default: Z.png); the format follows the extension")
 
 
-def _at(items) -> dict[str, float]:
+def _at(items) -> dict[str, float | str]:
+    """--at NAME=VALUE: a number, or a text (a material's name) for a dimension of names."""
     out = {}
     for item in items:
         name, sep, value = item.partition("=")
@@ -45,16 +48,44 @@ def _at(items) -> dict[str, float]:
         try:
             number = strict_float(value)  # as every number of the command line ('1_0' is refused)
         except ValueError:
-            sep = ""
+            number = value.strip()  # a name, for a dimension of names (checked against the sweep's)
+            if not number or any(c.isdigit() for c in number[:1]) or number.lower() in ("nan", "inf", "-inf"):
+                sep = ""
         if not sep or not name:
-            raise UsageError(f"--at: expected NAME=VALUE with a number, got {item!r}")
-        if not math.isfinite(number):
+            raise UsageError(f"--at: expected NAME=VALUE with a number (or a material's name), got {item!r}")
+        if isinstance(number, float) and not math.isfinite(number):
             raise UsageError(f"--at: {name} must be a finite number (a value of the sweep's grid), got {value!r}")
         if name in out:
             raise UsageError(f"--at: {name} given twice ({out[name]:g} and {number:g}); a map fixes each dimension "
-                             "once")
+                             "once" if isinstance(number, float) and isinstance(out[name], float) else
+                             f"--at: {name} given twice; a map fixes each dimension once")
         out[name] = number
     return out
+
+
+def _select(var, at: dict, quantity):
+    """``var`` at the grid values nearest those of ``at`` (in decades on a log axis), a name exactly."""
+    import numpy as np
+
+    for name, wanted in at.items():
+        values = var[name].values
+        if values.dtype.kind in "OUS":  # a dimension of names (materials)
+            names = [str(v) for v in values]
+            if wanted not in names:
+                raise UsageError(f"--at: {name}={wanted}: the sweep's {name} values are {', '.join(names)}")
+            var = var.isel({name: names.index(wanted)})
+            continue
+        if isinstance(wanted, str):
+            raise UsageError(f"--at: {name} takes a number (a value of the sweep's grid), got {wanted!r}")
+        v = values.astype(float)
+        log = _is_log(name, quantity) and np.all(v > 0) and wanted > 0
+        i = int(np.argmin(np.abs(np.log(v) - math.log(wanted)) if log else np.abs(v - wanted)))
+        var = var.isel({name: i})
+        got = float(v[i])
+        if not math.isclose(got, wanted, rel_tol=1e-9, abs_tol=1e-300):  # say so when it is not the one asked for
+            warnings.warn(f"--at {name}={wanted!r}: the sweep has no {name} = {wanted!r}; its nearest grid value"
+                          f"{' (in decades)' if log else ''}, {got!r}, is drawn", AsperityWarning, stacklevel=3)
+    return var
 
 
 def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
@@ -88,12 +119,7 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
     for name in at:
         if name not in var.dims or name in (x, y):
             raise UsageError(f"--at: {name!r} is not another dimension of {z} ({', '.join(var.dims)})")
-    var = var.sel({k: v for k, v in at.items()}, method="nearest")
-    for name, wanted in at.items():  # the nearest grid value: say so when it is not the one asked for
-        got = float(var[name].values)
-        if not math.isclose(got, wanted, rel_tol=1e-9, abs_tol=1e-300):
-            warnings.warn(f"--at {name}={wanted!r}: the sweep has no {name} = {wanted!r}; its nearest grid value, "
-                          f"{got!r}, is drawn", AsperityWarning, stacklevel=2)
+    var = _select(var, at, quantity)
     left = [d for d in var.dims if d not in (x, y)]
     if left:
         raise UsageError(f"{z} also varies along {', '.join(left)}: fix it with --at "
@@ -109,18 +135,24 @@ def heat_map(ds, x: str, y: str, z: str, at: dict, path: str, fmt: str) -> None:
     if log_z:  # decades: a log colour scale; zeros (no pull-off, say) and NaN drawn grey
         values = np.where(values > 0, values, np.nan)
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.85")
-    logs = {name: bool(_is_log(name, quantity) and np.all(ds[name].values > 0) and ds[name].size > 1)
-            for name in (x, y)}
+    names = {name: ds[name].values.dtype.kind in "OUS" for name in (x, y)}  # materials: one cell per name
+    logs = {name: bool(not names[name] and _is_log(name, quantity) and np.all(ds[name].values > 0)
+                       and ds[name].size > 1) for name in (x, y)}
     # cell edges halfway between the grid values: geometric midpoints on a log axis
-    mesh = ax.pcolormesh(_edges(ds[x].values, logs[x]), _edges(ds[y].values, logs[y]),
-                         np.ma.masked_invalid(values), shading="flat", norm=LogNorm() if log_z else None, cmap=cmap)
-    for name, set_scale, set_label in ((x, ax.set_xscale, ax.set_xlabel), (y, ax.set_yscale, ax.set_ylabel)):
+    edges = {name: np.arange(ds[name].size + 1) - 0.5 if names[name] else _edges(ds[name].values, logs[name])
+             for name in (x, y)}
+    mesh = ax.pcolormesh(edges[x], edges[y], np.ma.masked_invalid(values), shading="flat",
+                         norm=LogNorm() if log_z else None, cmap=cmap)
+    for name, axis, set_scale, set_label in ((x, ax.xaxis, ax.set_xscale, ax.set_xlabel),
+                                             (y, ax.yaxis, ax.set_yscale, ax.set_ylabel)):
         if logs[name]:
             set_scale("log")
+        if names[name]:
+            axis.set_ticks(np.arange(ds[name].size), [str(v) for v in ds[name].values])
         set_label(_label(ds[name], name))
     bar = fig.colorbar(mesh, ax=ax)
     bar.set_label(_label(ds[z], z))
-    notes = [f"{k} = {float(var[k]):.4g}" for k in at]
+    notes = [f"{k} = {var[k].item()}" if isinstance(at[k], str) else f"{k} = {float(var[k]):.4g}" for k in at]
     grey = (["<= 0"] if not_positive else []) + (["not computed (see message)"] if failed else [])
     if grey:
         notes.append("grey: " + " or ".join(grey))
