@@ -120,6 +120,26 @@ def test_files_and_bad_input(tmp_path):
         validate_surface(3.0, light_loads(5e-4), material="Au")
 
 
+def test_a_gw_comparison_that_cannot_run_says_what_to_check(tmp_path):
+    """Found by a user trial: a wave (no summits) gave only 'no summits found', and heights in
+    metres read as nanometres only the model's 'P_max ... too large for alpha = 8e-11'."""
+    topo = synthetic_surface("gaussian", SIZE, 32, short_cutoff=SIZE / 8, seed=0)
+    path = tmp_path / "m.npy"
+    np.save(path, np.asarray(topo.heights()))  # metres
+    with pytest.raises(ValueError, match=r"m.npy: the GW model on its \w+ summits cannot carry these loads "
+                                         r"\(P_max .*\); the map's rms height is \S+ m: check the height unit "
+                                         r"\(unit=, --unit\)"):
+        validate_surface(path, light_loads(5e-4), material="Au", physical_sizes=("4um", "4um"), unit="nm")
+    x = np.arange(32) * SIZE / 32
+    np.save(tmp_path / "wave.npy", 1e-8 * np.cos(2 * np.pi * x / SIZE)[:, None] * np.ones((1, 32)))
+    with pytest.raises(ValueError, match=r"wave.npy: no summits found on the surface: the GW model needs summit "
+                                         r"statistics; .* --model persson,bgt"):
+        validate_surface(tmp_path / "wave.npy", [1e-3], material="Au", physical_sizes=("4um", "4um"), unit="m",
+                         periodic=True)
+    assert validate_surface(tmp_path / "wave.npy", [1e-3], material="Au", physical_sizes=("4um", "4um"), unit="m",
+                            periodic=True, models=("persson", "bgt")).table["spots_bem"][0] == 1
+
+
 def test_interaction_leaves_periodic_area_and_gap_unchanged():
     topo = synthetic_surface("self-affine", SIZE, 32, short_cutoff=SIZE / 8, seed=2)
     P = light_loads(5e-4, 2e-3)

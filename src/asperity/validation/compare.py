@@ -268,7 +268,11 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
             stage(f"summit statistics of the {' x '.join(map(str, shape))} map", enabled=progress,
                   points=int(np.prod(shape)))
             start = time.perf_counter()
-            analysis = analyse_surface(topo)
+            try:
+                analysis = analyse_surface(topo)
+            except ValueError as err:  # (a user trial: a wave has no summits, and no hint was given)
+                raise ValueError(f"{err}: the GW model needs summit statistics; compare without it (models=...; "
+                                 "command line: --model persson,bgt, or icha where the map has summits)") from None
             t_analysis = time.perf_counter() - start
     except ValueError as err:
         raise ValueError(f"{source}: {err}") if source else err from None
@@ -305,7 +309,12 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
             with warnings.catch_warnings(record=True) as caught:  # -> notes naming the method
                 warnings.simplefilter("always")
                 start = time.perf_counter()
-                curves[method] = contacts[method].load_curve(bem.P)
+                try:
+                    curves[method] = contacts[method].load_curve(bem.P)
+                except ValueError as err:  # (a user trial: metre heights read as nm gave only this)
+                    raise ValueError(f"{source or 'surface'}: the GW model on its {method} summits cannot carry "
+                                     f"these loads ({err}); the map's rms height is {analysis.spectral.sigma:.3g} m: "
+                                     "check the height unit (unit=, --unit) and the loads") from None
                 t_model[method] = time.perf_counter() - start
             notes += model_warning_notes(method, caught)
         table.update(_gw_table(bem, analysis, contacts, curves))
