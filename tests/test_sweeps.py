@@ -83,14 +83,43 @@ def test_domain_error_becomes_nan_and_a_message():
     ds = asperity.sweep(alpha=0.003, beta=1000.0, gamma=[0.0, 1e-3, 1e-30], P=[-1.0, 10.0], scheduler="serial")
     assert ds.gamma.values.tolist() == [0.0, 1e-30, 1e-3]  # stored in increasing order
     msg = {g: ds.message.sel(gamma=g).item() for g in (0.0, 1e-3, 1e-30)}
-    assert "P (load) must be > 0 (without adhesion, gamma = 0)" in msg[0.0]
+    assert msg[0.0].startswith("note: P (load) must be > 0 (without adhesion, gamma = 0)")
+    assert msg[0.0].endswith("NaN at the 1 load(s) below it, the others computed")
     assert msg[1e-3] == ""
     assert "lambda" in msg[1e-30] and "outside" in msg[1e-30]
-    bad = ds.sel(gamma=[0.0, 1e-30])
+    bad = ds.sel(gamma=1e-30)
     assert np.isnan(bad.mu.values).all() and np.isnan(bad.pull_off.values).all()
     c, po = loop_cell(0.003, 1000.0, 1e-3, [-1.0, 10.0])
     np.testing.assert_array_equal(ds.F.sel(gamma=1e-3).values, c.F)
     assert ds.pull_off.sel(gamma=1e-3).item() == po.force
+    # Found by a user trial: the load below gamma = 0's least one blanked the load it can carry
+    # and the pull-off too; now only that load is NaN, the rest equal the model's
+    c, po = loop_cell(0.003, 1000.0, 0.0, [10.0])
+    hertz = ds.sel(gamma=0.0)
+    for name in ("d", "F", "mu", "area", "pressure", "contacts"):
+        assert np.isnan(hertz[name].values[0]) and hertz[name].values[1] == getattr(c, name)[0], name
+    assert hertz.pull_off.item() == po.force == 0.0
+
+
+def test_one_load_below_the_pull_off_is_nan_alone_in_every_route(tmp_path, capsys):
+    """The same for an adhesive set and a physical contact: NaN at the loads below minus the
+    pull-off force, the others and the pull-off computed as the library's load curve does."""
+    from asperity.physical import PhysicalContact, Surface
+
+    ds = asperity.sweep(alpha=0.003, beta=1000.0, gamma=1e-3, P=[-1000.0, -1.0, 1.0], scheduler="serial")
+    c, po = loop_cell(0.003, 1000.0, 1e-3, [-1.0, 1.0])
+    F = ds.F.values.ravel()  # one set: a dimension 'point' of one
+    assert np.isnan(F[0]) and F[1:].tolist() == c.F.tolist()
+    assert ds.pull_off.item() == po.force and "-320.127 (minus the pull-off force)" in ds.message.item()
+    phys = asperity.sweep(material="Au", sigma_s=2e-9, R=1e-6, eta=1e12, area=1e-6, P=[-100.0, 1e-3, 1e-2],
+                          scheduler="serial")
+    contact = PhysicalContact("Au", Surface(2e-9, 1e-6, 1e12, 1e-6))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", asperity.AsperityWarning)
+        curve = contact.load_curve([1e-3, 1e-2])
+    area = phys.area_m2.values.ravel()
+    assert np.isnan(area[0]) and area[1:].tolist() == curve.area.tolist()
+    assert "N (minus the pull-off force)" in phys.message.item() and "NaN at the 1 load(s)" in phys.message.item()
 
 
 def test_points_from_a_dict_and_from_csv(tmp_path):

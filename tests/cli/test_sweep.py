@@ -48,12 +48,14 @@ def test_zarr_separations_hk_and_chunks_equal_the_api(capsys, tmp_path):
 
 def test_points_csv_and_failed_sets_counted(capsys, tmp_path):
     pts = tmp_path / "sets.csv"
-    pts.write_text("alpha,beta,gamma\n0.003,1000,1e-3\n0.01,1000,0\n")
+    pts.write_text("alpha,beta,gamma\n0.003,1000,1e-3\n0.01,1000,0\n0.01,1000,1e-30\n")
     out = tmp_path / "pts.nc"
     code, text, err = run(capsys, "sweep", "--points", str(pts), "--P=-1,10", "--out", str(out),
                           "--scheduler", "serial")
     assert code == 0, err
-    assert "2 parameter sets, 1 outside the model's domain" in text
+    # gamma = 0 cannot carry P = -1 (NaN there, noted), 1e-30 leaves Maugis's range (NaN, counted)
+    assert "3 parameter sets, 1 outside the model's domain (NaN; see the message variable), 1 with a validity " \
+           "note of the library" in text
     same(out, asperity.sweep(points=str(pts), P=np.array([-1.0, 10.0]), scheduler="serial"))
 
 

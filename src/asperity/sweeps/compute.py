@@ -3,7 +3,9 @@
 :func:`compute_chunk` is what a task runs, on a worker or in the driving process.  It
 takes only plain data (the chunk's parameter sets, the loads) and returns plain arrays,
 so it pickles cheaply.  A set outside the model's domain (the library raises
-:class:`ValueError`) gives NaN in every variable and its message; the chunk goes on.  A set
+:class:`ValueError`) gives NaN in every variable and its message; the chunk goes on.  Loads
+below a set's least load (minus its pull-off force; none without adhesion) give NaN at those
+loads only, the others and the pull-off are computed, and the message notes it.  A set
 computed under one of the library's validity warnings (:class:`asperity.AsperityWarning`,
 e.g. asperities past yield with the elastic law) keeps its numbers and its message holds the
 warning, prefixed ``note:``.
@@ -19,6 +21,7 @@ from .._warnings import AsperityWarning
 from ..bodies import contact_material
 from ..curves import Model
 from ..friction_stress import HurtadoKim
+from ..load_control import LoadOutOfRange
 from ..physical import PhysicalContact
 from ..surface import Surface
 
@@ -60,7 +63,7 @@ def compute_set(kind: str, params: dict, axis: str, values: np.ndarray) -> dict:
         if p.get("w") is not None or p.get("b") is not None:  # the material's, replaced
             body = contact_material(body, w=p.get("w"), b=p.get("b"))
         contact = PhysicalContact(body, Surface(p["sigma_s"], p["R"], p["eta"], p["area"]))
-        curve = contact.load_curve(values) if axis == "P_N" else contact.separation_curve(values)
+        curve = _load_curve(contact, values) if axis == "P_N" else contact.separation_curve(values)
         po = contact.pull_off()
         out = curve.columns()  # SI names: d_m, P_N, F_N, mu, area_m2, pressure_Pa, contacts
         out.update(pull_off_N=po.force, pull_off_d_m=po.d, alpha=contact.alpha, beta=contact.beta,
@@ -69,11 +72,44 @@ def compute_set(kind: str, params: dict, axis: str, values: np.ndarray) -> dict:
     p = params
     model = Model(p["alpha"], p["beta"], p["gamma"], nu=p["nu"], h_over_b=p["h_over_b"],
                   friction=HurtadoKim(*(p[k] for k in _HK)))
-    curve = model.load_curve(values) if axis == "P" else model.separation_curve(values)
+    curve = _load_curve(model, values) if axis == "P" else model.separation_curve(values)
     po = model.pull_off()
     out = curve.columns()
     out.update(pull_off=po.force, pull_off_d=po.d)
     return out
+
+
+class _Columns:
+    """A curve's columns with NaN rows where it has no equilibrium (see :func:`_load_curve`)."""
+
+    def __init__(self, columns: dict):
+        self._columns = columns
+
+    def columns(self) -> dict:
+        return self._columns
+
+
+def _load_curve(model, P: np.ndarray):
+    """``model.load_curve(P)``, or where some loads lie below its least load, the curve at the
+    others with NaN at those and an :class:`AsperityWarning` saying so (a user trial: one load
+    below the pull-off blanked the whole set, the loads it could carry and its pull-off too)."""
+    try:
+        return model.load_curve(P)
+    except LoadOutOfRange as err:
+        inside = P > err.floor if err.exclusive else P >= err.floor
+        if not np.any(inside):
+            raise
+        part = model.load_curve(P[inside]).columns()
+        columns = {}
+        for name, column in part.items():
+            full = np.full(P.shape, np.nan)
+            full[inside] = column
+            columns[name] = full
+        axis = "P_N" if "P_N" in columns else "P"
+        columns[axis] = np.asarray(P, dtype=float).copy()
+        warnings.warn(AsperityWarning(f"{err}: NaN at the {int(np.sum(~inside))} load(s) below it, the others "
+                                      "computed"), stacklevel=2)
+        return _Columns(columns)
 
 
 def compute_chunk(kind: str, sets: list[dict], axis: str, values: np.ndarray, variables: dict) -> dict:
