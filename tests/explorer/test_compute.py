@@ -232,3 +232,13 @@ def test_a_pull_off_beyond_the_plotted_separations_says_so():
         state, _ = state_from_query(query)
         row = next(r for r in attempt(state).derived if r[0] == "pull-off force")
         assert row[1].endswith("(beyond the plotted separations)") == beyond, row
+
+
+def test_notes_that_differ_only_in_their_numbers_and_signs_are_one():
+    """A review: 'P = -5.452e+11' and 'P = 3e+11' were two notes (the minus sign was text)."""
+    from asperity.explorer.compute import number_free
+
+    assert number_free("area above 10 % from P = -5.452e+11 N (up to 75.2 %)") == \
+        number_free("area above 10 % from P = 3e+11 N (up to 88.2 %)") == "area above # % from P = # N (up to # %)"
+    assert number_free("lambda = .5 and 2") == "lambda = # and #"
+    assert number_free("Au has no b") != number_free("Si has no b")

@@ -218,8 +218,9 @@ def _derived(state: State, subject, pull_off) -> list[tuple[str, str, str]]:
 
 
 def number_free(note: str) -> str:
-    """A note with its numbers replaced by '#': two notes that differ only in them are one."""
-    return re.sub(r"\d[\d.e+-]*", "#", note)
+    """A note with its numbers replaced by '#': two notes that differ only in them are one
+    (their signs too: a review saw '-5.452e+11' and '1e+11' kept as two notes)."""
+    return re.sub(r"[-+]?\.?\d[\d.e+-]*", "#", note)
 
 
 def caught_notes(caught) -> list[str]:
