@@ -325,7 +325,7 @@ SKIP = {
        for name in ("asperity.sweeps.compute.compute_chunk", "asperity.sweeps.compute.compute_set",
                     "asperity.sweeps.store.open_store", "asperity.sweeps.store.MemoryStore",
                     "asperity.sweeps.store.NetCDFStore", "asperity.sweeps.store.ZarrStore",
-                    "asperity.sweeps.store.store_bytes")},
+                    "asperity.sweeps.store.store_bytes", "asperity.sweeps.store.hdf5_chunk")},
     "asperity.sweeps.store.open_result": "opens a finished sweep file with xarray (tests/test_sweeps.py)",
     **{name: "an input check of physical_cycle and physical_preload_curve, which are fuzzed with the same "
              "inputs (tests/test_physical_cycle.py tests the messages)"

@@ -556,3 +556,20 @@ def test_netcdf_outputs_of_other_spellings_are_written(tmp_path, name):
     asperity.sweep(alpha=[0.01, 0.02], beta=1000.0, P=[1.0], scheduler="serial", out=str(tmp_path / name))
     with xr.open_dataset(tmp_path / name) as ds:
         assert ds.mu.shape == (2, 1)
+
+
+@pytest.mark.parametrize("sizes, limit", [((1, 10, 32), 2**27), ((256, 10**6), 2**27), ((10**6, 10**6), 2**27),
+                                          ((2, 3, 5), 7), ((3, 0), 10)])
+def test_an_hdf5_chunk_holds_at_most_the_limit(sizes, limit):
+    """HDF5 refuses chunks of 4 GiB or more: a sweep's chunk (chunk_sets up to the caller,
+    curves up to 1e6 loads) is cut along its last dimensions to at most 2^27 doubles; one
+    within the limit is kept as it is, and the sets of a chunk are cut only when one set's
+    curve alone is too long."""
+    import math
+
+    got = store_module.hdf5_chunk(sizes, limit)
+    assert math.prod(got) <= limit and all(1 <= g <= max(1, n) for g, n in zip(got, sizes, strict=True))
+    if math.prod(max(1, n) for n in sizes) <= limit:
+        assert got == tuple(max(1, n) for n in sizes)
+    if math.prod(sizes[:-1]) <= limit < math.prod(sizes):
+        assert got[:-1] == sizes[:-1] and got[-1] >= sizes[-1] // math.ceil(math.prod(sizes) / limit)

@@ -17,6 +17,7 @@ ending in ``.zarr``, format 2) through xarray's region writes.
 
 from __future__ import annotations
 
+import math
 import os
 import shutil
 import textwrap
@@ -27,7 +28,8 @@ from .._optional import require
 from .._version import __version__
 from .spec import SweepSpec
 
-__all__ = ["open_store", "open_result", "store_bytes", "MemoryStore", "NetCDFStore", "ZarrStore", "MESSAGE_CHARS"]
+__all__ = ["open_store", "open_result", "store_bytes", "hdf5_chunk", "MemoryStore", "NetCDFStore", "ZarrStore",
+           "MESSAGE_CHARS", "HDF5_CHUNK_VALUES"]
 
 #: Longest message kept per set (Zarr stores fixed-width strings).
 MESSAGE_CHARS = 400
@@ -43,6 +45,34 @@ def _attrs(spec: SweepSpec) -> dict:
     for k, v in spec.constants.items():
         out[k] = v
     return out
+
+
+#: Most values in one HDF5 chunk of a NetCDF sweep (1 GiB of doubles; HDF5's limit is 4 GiB).
+HDF5_CHUNK_VALUES = 2**27
+
+
+def hdf5_chunk(sizes: tuple[int, ...], limit: int = HDF5_CHUNK_VALUES) -> tuple[int, ...]:
+    """The chunk shape ``sizes`` cut along its last dimensions until it holds at most ``limit`` values.
+
+    Parameters
+    ----------
+    sizes : tuple of int
+        The sweep's chunk (sets along the parameter dimensions, and the loads of a curve).
+    limit : int
+        Most values per chunk.
+
+    Returns
+    -------
+    tuple of int
+        Each at least 1 and at most the given size.
+    """
+    out = [max(1, int(n)) for n in sizes]
+    for i in reversed(range(len(out))):
+        total = math.prod(out)
+        if total <= limit:
+            break
+        out[i] = max(1, out[i] // math.ceil(total / limit))
+    return tuple(out)
 
 
 def _var_dims(spec: SweepSpec, where: str) -> tuple[str, ...]:
@@ -153,7 +183,7 @@ class NetCDFStore(MemoryStore):
             # result, 4.6 GB in 10 s for 1e8 sets, a 27 GB .partial after a minute).
             chunk = tuple(s.stop - s.start for s in spec.chunk_region(0))
             for k, (meaning, unit, where) in spec.variables().items():
-                sizes = chunk + ((spec.values.size,) if where == "curve" else ())
+                sizes = hdf5_chunk(chunk + ((spec.values.size,) if where == "curve" else ()))
                 var = ds.createVariable(k, "f8", _var_dims(spec, where), fill_value=np.nan, chunksizes=sizes)
                 var.setncatts({"long_name": meaning, "units": unit, **extra})
             var = ds.createVariable("message", str, spec.dims)
