@@ -376,6 +376,14 @@ def test_the_local_cluster_runs_its_workers_with_asperity_settings(serial):
 
     cluster, client = run_module._local_cluster()
     try:
+        # on the loopback interface only: the scheduler, the workers and the dashboard (a review
+        # saw the dashboard on 0.0.0.0)
+        assert cluster.scheduler_address.startswith("tcp://127.0.0.1:")
+        assert all(w.startswith("tcp://127.0.0.1:") for w in client.scheduler_info()["workers"])
+        dashboard = client.run_on_scheduler(lambda dask_scheduler: dask_scheduler.http_server.port)
+        sockets = client.run_on_scheduler(lambda dask_scheduler: [s.getsockname()[0] for s in
+                                                                  dask_scheduler.http_server._sockets.values()])
+        assert dashboard > 0 and set(sockets) == {"127.0.0.1"}, sockets
         env = client.run(lambda: os.environ.get("MALLOC_TRIM_THRESHOLD_"))
         assert set(env.values()) == {str(128 * 2**20)}
         profiling = client.run(lambda: __import__("dask").config.get("distributed.worker.profile.enabled"))
@@ -573,3 +581,29 @@ def test_an_hdf5_chunk_holds_at_most_the_limit(sizes, limit):
         assert got == tuple(max(1, n) for n in sizes)
     if math.prod(sizes[:-1]) <= limit < math.prod(sizes):
         assert got[:-1] == sizes[:-1] and got[-1] >= sizes[-1] // math.ceil(math.prod(sizes) / limit)
+
+
+def test_a_load_at_the_floor_in_newtons_never_blanks_its_set():
+    """A review: a load equal to the floor a physical set reports (in newtons) can round one
+    step below the model's own floor once divided by N G b^2; the retry then raised and the
+    whole set was NaN (3 of 120 sets).  Now such a load is dropped too, the others computed."""
+    from asperity.load_control import LoadOutOfRange
+    from asperity.physical import PhysicalContact, Surface
+    from asperity.sweeps.compute import compute_set
+
+    checked = 0
+    for name in ("Au", "Cu", "Ag", "Pt", "Ni"):
+        for sigma_s in np.geomspace(5e-10, 4e-9, 6):
+            for R in (1e-7, 1e-6):
+                params = dict(material=name, sigma_s=float(sigma_s), R=R, eta=1e12, area=1e-6)
+                contact = PhysicalContact(name, Surface(float(sigma_s), R, 1e12, 1e-6))
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore", asperity.AsperityWarning)
+                    try:
+                        contact.load_curve([-1e9])
+                    except LoadOutOfRange as err:
+                        floor = err.floor
+                    out = compute_set("physical", params, "P_N", np.array([-1e9, floor, 1e-3]))
+                assert np.isnan(out["F_N"][0]) and np.isfinite(out["F_N"][2]), params
+                checked += 1
+    assert checked == 60

@@ -55,7 +55,8 @@ def test_points_csv_and_failed_sets_counted(capsys, tmp_path):
     assert code == 0, err
     # gamma = 0 cannot carry P = -1 (NaN there, noted), 1e-30 leaves Maugis's range (NaN, counted)
     assert "3 parameter sets, 1 outside the model's domain (NaN; see the message variable), 1 with a validity " \
-           "note of the library" in text
+           "note of the library (see the message variable), of which 1 with NaN at the loads below their least " \
+           "load" in text
     same(out, asperity.sweep(points=str(pts), P=np.array([-1.0, 10.0]), scheduler="serial"))
 
 

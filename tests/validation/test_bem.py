@@ -84,6 +84,36 @@ def test_a_file_solved_as_periodic_is_levelled_as_periodic(tmp_path, capsys, p_r
     assert json.loads(out)["table"]["fraction_bem"] == [got.table["fraction_bem"][0]]
 
 
+def test_periodic_with_a_grid_that_drops_edge_points_and_undefined_data(tmp_path):
+    """A review of the fix above: with grid=64 on a 130-point cosine the averaging dropped an
+    edge point and the periodicity with it, so bem_contact levelled by a plane again (0.023
+    for 0.064) while validate_surface gave 0.0698; and a masked pixel was solved as a height
+    once the map was rebuilt as periodic.  Now both give the same periodic answer, and
+    undefined data is refused with periodic=True as without it."""
+    from asperity.bodies import contact_material
+    from asperity.validation import validate_surface
+
+    n, lam, D = 130, 2e-6, 10e-9
+    x = np.arange(n) * lam / n
+    h = D * np.cos(2 * np.pi * x / lam)[:, None] * np.ones((1, n))
+    free = Topography(h, (lam, lam), periodic=False, unit="m")
+    p_star = math.pi * E_STAR * D / lam
+    load = 0.01 * p_star * lam * lam
+    expected = 2 / math.pi * math.asin(math.sqrt(0.01))
+    direct = bem_contact(free, [load], E_star=E_STAR, periodic=True, grid=64)
+    assert direct.nb_grid_pts == (43, 43) and direct.periodic  # 3 x 3 blocks: 129 of 130 points kept
+    assert direct.area_fraction[0] == pytest.approx(expected, abs=2.0 / 43) and direct.spots[0] == 1
+    got = validate_surface(free, [load], material=contact_material(E=f"{E_STAR}Pa", nu=0.0), models=("persson",),
+                           periodic=True, grid=64)
+    assert got.table["fraction_bem"][0] == direct.area_fraction[0]
+    assert not any("periodicity" in w for w in got.parameters["warnings"])
+    masked = Topography(np.ma.masked_array(h, mask=np.eye(n, dtype=bool) & (np.arange(n) == 5)), (lam, lam),
+                        periodic=False, unit="m")
+    for periodic in (None, True):
+        with pytest.raises(ValueError, match="undefined data"):
+            bem_contact(masked, [load], E_star=E_STAR, periodic=periodic)
+
+
 def test_grid_refinement_lowers_pixel_area():
     # The same band-limited surface on two grids: pixel-counted areas fall with refinement and converge.
     coarse, fine = (synthetic_surface("gaussian", 2e-6, n, short_cutoff=2e-6 / 8, seed=3) for n in (32, 64))

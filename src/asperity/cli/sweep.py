@@ -161,6 +161,7 @@ def run(args) -> None:
     import numpy as np
 
     from ..sweeps import sweep
+    from ..sweeps.compute import LOADS_NAN_NOTE
 
     kwargs = sweep_arguments(args)
     progress = sys.stderr.isatty() if args.progress is None else args.progress
@@ -168,8 +169,10 @@ def run(args) -> None:
     messages = ds["message"].values.astype(str)
     noted = int(np.char.startswith(messages, "note:").sum())
     failed = int((messages != "").sum()) - noted
+    partly = int((np.char.find(messages, LOADS_NAN_NOTE) >= 0).sum())  # computed, NaN at some loads
     total = int(messages.size)
     ds.close()
     print(f"wrote {args.out}: {total} parameter sets"
           + (f", {failed} outside the model's domain (NaN; see the message variable)" if failed else "")
-          + (f", {noted} with a validity note of the library (see the message variable)" if noted else ""))
+          + (f", {noted} with a validity note of the library (see the message variable)" if noted else "")
+          + (f", of which {partly} with NaN at the loads below their least load" if partly else ""))

@@ -25,7 +25,10 @@ from ..load_control import LoadOutOfRange
 from ..physical import PhysicalContact
 from ..surface import Surface
 
-__all__ = ["compute_chunk", "compute_set"]
+__all__ = ["compute_chunk", "compute_set", "LOADS_NAN_NOTE"]
+
+#: Words of a set's note when some of its loads lie below its least load (NaN there).
+LOADS_NAN_NOTE = "load(s) below it, the others computed"
 
 _HK = ("tau_f1", "tau_f2", "a1", "a2")
 
@@ -55,7 +58,9 @@ def compute_set(kind: str, params: dict, axis: str, values: np.ndarray) -> dict:
     Raises
     ------
     ValueError
-        If the set lies outside the model's domain (e.g. a load below minus the pull-off).
+        If the set lies outside the model's domain (e.g. lambda out of range, or every load
+        below minus the pull-off; loads below it beside others it carries are NaN, with an
+        :class:`~asperity.AsperityWarning`).
     """
     if kind == "physical":
         p = params
@@ -96,20 +101,27 @@ def _load_curve(model, P: np.ndarray):
     try:
         return model.load_curve(P)
     except LoadOutOfRange as err:
+        first = err
         inside = P > err.floor if err.exclusive else P >= err.floor
+    for _ in range(3):  # a load at the floor in newtons can round below it in the model's units: drop it
         if not np.any(inside):
-            raise
-        part = model.load_curve(P[inside]).columns()
-        columns = {}
-        for name, column in part.items():
-            full = np.full(P.shape, np.nan)
-            full[inside] = column
-            columns[name] = full
-        axis = "P_N" if "P_N" in columns else "P"
-        columns[axis] = np.asarray(P, dtype=float).copy()
-        warnings.warn(AsperityWarning(f"{err}: NaN at the {int(np.sum(~inside))} load(s) below it, the others "
-                                      "computed"), stacklevel=2)
-        return _Columns(columns)
+            raise first
+        try:
+            part = model.load_curve(P[inside]).columns()
+            break
+        except LoadOutOfRange as again:
+            inside &= P > again.got
+    else:
+        raise first
+    columns = {}
+    for name, column in part.items():
+        full = np.full(P.shape, np.nan)
+        full[inside] = column
+        columns[name] = full
+    axis = "P_N" if "P_N" in columns else "P"
+    columns[axis] = np.asarray(P, dtype=float).copy()
+    warnings.warn(AsperityWarning(f"{first}: NaN at the {int(np.sum(~inside))} {LOADS_NAN_NOTE}"), stacklevel=2)
+    return _Columns(columns)
 
 
 def compute_chunk(kind: str, sets: list[dict], axis: str, values: np.ndarray, variables: dict) -> dict:

@@ -121,8 +121,9 @@ def _local_cluster():
     try:
         with local_worker_settings():
             # config=: each nanny hands it to every worker it starts, restarts included
-            cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                               dashboard_address=":0", silence_logs=logging.ERROR,
+            # on the loopback interface only, its dashboard too (a review saw it on 0.0.0.0)
+            cluster = distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                               dashboard_address="127.0.0.1:0", silence_logs=logging.ERROR,
                                                config={"distributed.worker.profile.enabled": False})
     except BaseException:
         # Ctrl-C or SIGTERM while the cluster starts (a user trial): a half-built cluster would be

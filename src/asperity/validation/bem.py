@@ -160,8 +160,8 @@ def with_periodicity(topography, periodic):
     if periodic is None:
         return topography
     periodic = check_bool(periodic, "periodic")
-    if bool(topography.is_periodic) == periodic or topography.dim != 2:
-        return topography
+    if bool(topography.is_periodic) == periodic or topography.dim != 2 or topography.has_undefined_data:
+        return topography  # (undefined data: left for the caller's refusal, not rebuilt without its mask)
     st = require("SurfaceTopography", purpose="boundary-element contact", extra="topography")
     return st.Topography(np.asarray(topography.heights(), dtype=float), tuple(topography.physical_sizes),
                          periodic=periodic, unit=topography.unit)
@@ -291,7 +291,7 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
         raise ValueError(f"tolerance must lie in (0, 0.1], got {tolerance!r}")
     if isinstance(maxiter, bool) or not isinstance(maxiter, int | np.integer) or maxiter < 1:
         raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
-    topo = _prepare(with_periodicity(topography, periodic), grid)
+    topo = _prepare(topography, grid, periodic)
     periodic = bool(topo.is_periodic) if periodic is None else check_bool(periodic, "periodic")
     cm = _contact_mechanics()
     systems = require("ContactMechanics.Systems", purpose="boundary-element contact", extra="bem")
@@ -331,8 +331,9 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
                                 "physical_sizes_m": sizes, "tolerance": tolerance})
 
 
-def _prepare(topography, grid):
-    """Check the map, put it in metres, subsample it, remove its mean plane."""
+def _prepare(topography, grid, periodic=None):
+    """Check the map, put it in metres, subsample it, give it the boundaries asked for
+    (after the subsampling, which drops periodicity with edge points), level it."""
     if not all(hasattr(topography, a) for a in ("heights", "dim", "nb_grid_pts", "detrend", "physical_sizes")):
         raise TypeError(f"topography must be a SurfaceTopography map, got {type(topography).__name__}")
     if topography.dim != 2:
@@ -341,7 +342,7 @@ def _prepare(topography, grid):
         raise ValueError("the topography has undefined data; fill it (fill_undefined=True) first")
     if topography.unit not in (None, "m"):
         topography = topography.to_unit("m")
-    topography = subsample(topography, grid)
+    topography = with_periodicity(subsample(topography, grid), periodic)
     nb = tuple(int(n) for n in topography.nb_grid_pts)
     if min(nb) < MIN_GRID:
         raise ValueError(f"grid {nb[0]} x {nb[1]} is too small for a boundary-element solve; need at least "

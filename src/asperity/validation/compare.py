@@ -262,7 +262,7 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     try:
         topo = with_periodicity(topo, periodic)  # levelling, summits at the edges, ICHA: as the solve's
         full = topo if topo.unit in (None, "m") else topo.to_unit("m")
-        topo = subsample(full, grid)
+        topo = with_periodicity(subsample(full, grid), periodic)  # as the solve's, points dropped or not
         shape = tuple(int(n) for n in topo.nb_grid_pts)
         if "gw" in models:
             stage(f"summit statistics of the {' x '.join(map(str, shape))} map", enabled=progress,
