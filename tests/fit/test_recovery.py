@@ -316,3 +316,26 @@ def test_in_a_joint_fit_the_clamped_advice_names_the_data_sets_own_offset():
     note = [w for w in held.warnings if w.startswith("shifted:")]
     assert len(note) == 1 and "the offset d0_m_1 is held (at 0)" in note[0]
     assert not any("offset" in w for w in held.warnings if w.startswith("good:"))
+
+
+def test_a_fitted_value_far_outside_its_typical_range_is_noted():
+    """Found by a user trial: nN data labelled uN gave w = 100.8 J/m^2 (30 times the largest of
+    the material table) with no note.  JKR friction from its closed form, a^3 = (R/K)(P + 3 pi w R
+    + sqrt(6 pi w R P + (3 pi w R)^2)), F = tau pi a^2: in nN it fits w = 0.05 without a note;
+    the same numbers read as uN give w 1000 times larger, noted with the registry's range."""
+    from asperity.fit import fit_friction_load, friction_load_data
+
+    w, R_tip, tau, K = 0.05, 50e-9, 5e8, 4.0 / 3.0 * E_STAR
+    P = np.linspace(-2.0, 20.0, 30) * 1e-9  # N
+    a = (R_tip / K * (P + 3 * math.pi * w * R_tip + np.sqrt(6 * math.pi * w * R_tip * P
+                                                             + (3 * math.pi * w * R_tip) ** 2))) ** (1 / 3)
+    F = tau * math.pi * a**2
+    kws = {"fix": {"R_m": R_tip, "E_star_Pa": E_STAR}, "ci": "wald"}
+    right = fit_friction_load(friction_load_data(P, F, physical=True), "jkr", **kws)
+    assert right.values["w_J_m2"] == pytest.approx(w, rel=1e-6)
+    assert not any("typical range" in note for note in right.warnings)
+    wrong = fit_friction_load(friction_load_data(P * 1e3, F * 1e3, physical=True), "jkr", **kws)
+    assert wrong.values["w_J_m2"] == pytest.approx(1e3 * w, rel=1e-3)
+    notes = [note for note in wrong.warnings if "typical range" in note]
+    assert len(notes) == 1 and notes[0].startswith("w_J_m2 = 50 J/m^2 lies far outside its typical range (0.001 to 5 "
+                                                   "J/m^2): check the units of the data")

@@ -44,6 +44,9 @@ class ParameterSpec:
     lo_inclusive, hi_inclusive : bool
         Whether the bounds themselves are valid values (the registry's; 0 is a valid work
         of adhesion, not a valid radius).
+    typical : tuple of float or None
+        The registry's typical range in ``unit`` (None where it has none in that unit): a
+        fitted value far outside it gets a note (a unit mistake in the data).
     """
 
     name: str
@@ -56,6 +59,7 @@ class ParameterSpec:
     meaning: str = ""
     lo_inclusive: bool = True
     hi_inclusive: bool = True
+    typical: tuple | None = None
 
     def valid(self, value: float) -> bool:
         """True if ``value`` lies in the parameter's valid range (bounds included where valid)."""
@@ -80,7 +84,8 @@ def parameter_spec(qname: str, value, *, physical: bool, vary: bool = False, mea
                          lo=q.lo, hi=q.hi, log=q.log, unit=(q.si_unit if si else q.unit) or "1",
                          meaning=q.meaning if meaning is None else meaning,
                          lo_inclusive=q.lo_inclusive or q.lo == -math.inf,
-                         hi_inclusive=q.hi_inclusive or q.hi == math.inf)
+                         hi_inclusive=q.hi_inclusive or q.hi == math.inf,
+                         typical=q.typical if q.log and (not si or q.unit == q.si_unit) else None)
 
 
 @dataclass(frozen=True)

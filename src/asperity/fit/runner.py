@@ -354,7 +354,7 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
         curves.append(curve)
         for k, v in term.model.derived(local).items():
             derived[k if len(problem.terms) == 1 else f"{k}_{i + 1}"] = v
-    warnings += a["warnings"]
+    warnings += a["warnings"] + _implausible(problem, values)
     n_free = len(a["names"])
     if result.nfree <= 0:
         warnings.append("as many free parameters as data points: no degrees of freedom, the fit passes through "
@@ -375,3 +375,24 @@ def _result(problem, result, a, nfev, profile_nfev, lmfit, grid, start) -> FitRe
                      derived=derived, nfev=nfev, model_evaluations=sum(t.evaluations for t in problem.terms),
                      success=bool(result.success and not result.aborted), message=str(result.message),
                      report=lmfit.fit_report(result), profile_nfev=profile_nfev)
+
+
+#: How far outside the registry's typical range (a factor) a fitted value gets a note.
+IMPLAUSIBLE_FACTOR = 5.0
+
+
+def _implausible(problem, values) -> list[str]:
+    """Notes for fitted values far outside their typical range (a user trial: nN data labelled
+    uN gave w = 100.8 J/m^2, 30 times the largest of the material table, with no note)."""
+    notes = []
+    for name, p in problem.params.items():
+        typical = p.spec.typical
+        if not p.vary or typical is None or not typical[0] > 0 or p.spec.unit == "1":
+            continue  # (a quantity with a unit: a unit mistake in the data shows there)
+        lo, hi = typical
+        value = values[name]
+        if not lo / IMPLAUSIBLE_FACTOR <= abs(value) <= hi * IMPLAUSIBLE_FACTOR and value != 0:
+            unit = "" if p.spec.unit == "1" else f" {p.spec.unit}"
+            notes.append(f"{name} = {value:.4g}{unit} lies far outside its typical range ({lo:g} to {hi:g}{unit}): "
+                         "check the units of the data (their column headers) and of the values given")
+    return notes
