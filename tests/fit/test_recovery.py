@@ -339,3 +339,8 @@ def test_a_fitted_value_far_outside_its_typical_range_is_noted():
     notes = [note for note in wrong.warnings if "typical range" in note]
     assert len(notes) == 1 and notes[0].startswith("w_J_m2 = 50 J/m^2 lies far outside its typical range (0.001 to 5 "
                                                    "J/m^2): check the units of the data")
+    # a value given, too (a newcomer: --fix R_m=20 is 20 m, silently)
+    held = fit_friction_load(friction_load_data(P, F, physical=True), "jkr",
+                             fix={"R_m": 20.0, "E_star_Pa": E_STAR}, ci="wald")
+    assert any(note.startswith("R_m = 20 m (held) lies far outside its typical range (1e-08 to 0.001 m)")
+               for note in held.warnings)

@@ -387,12 +387,13 @@ def _implausible(problem, values) -> list[str]:
     notes = []
     for name, p in problem.params.items():
         typical = p.spec.typical
-        if not p.vary or typical is None or not typical[0] > 0 or p.spec.unit == "1":
-            continue  # (a quantity with a unit: a unit mistake in the data shows there)
+        if typical is None or not typical[0] > 0 or p.spec.unit == "1":
+            continue  # (a quantity with a unit: a unit mistake in the data or a value given shows there)
         lo, hi = typical
         value = values[name]
         if not lo / IMPLAUSIBLE_FACTOR <= abs(value) <= hi * IMPLAUSIBLE_FACTOR and value != 0:
             unit = "" if p.spec.unit == "1" else f" {p.spec.unit}"
-            notes.append(f"{name} = {value:.4g}{unit} lies far outside its typical range ({lo:g} to {hi:g}{unit}): "
-                         "check the units of the data (their column headers) and of the values given")
+            held = "" if p.vary else " (held)"
+            notes.append(f"{name} = {value:.4g}{unit}{held} lies far outside its typical range ({lo:g} to "
+                         f"{hi:g}{unit}): check the units of the data (their column headers) and of the values given")
     return notes
