@@ -344,3 +344,6 @@ def test_a_fitted_value_far_outside_its_typical_range_is_noted():
                              fix={"R_m": 20.0, "E_star_Pa": E_STAR}, ci="wald")
     assert any(note.startswith("R_m = 20 m (held) lies far outside its typical range (1e-08 to 0.001 m)")
                for note in held.warnings)
+    tied = fit_friction_load(friction_load_data(P, F, physical=True), "jkr", fix={"E_star_Pa": E_STAR},
+                             start={"w_J_m2": 0.04, "tau_Pa": 4e8}, expr={"R_m": "20 + 0 * w_J_m2"}, ci="wald")
+    assert any(note.startswith(f"R_m = {tied.values['R_m']:.4g} m (tied) lies far outside") for note in tied.warnings)

@@ -393,7 +393,7 @@ def _implausible(problem, values) -> list[str]:
         value = values[name]
         if not lo / IMPLAUSIBLE_FACTOR <= abs(value) <= hi * IMPLAUSIBLE_FACTOR and value != 0:
             unit = "" if p.spec.unit == "1" else f" {p.spec.unit}"
-            held = "" if p.vary else " (held)"
+            held = "" if p.vary else " (tied)" if p.expr is not None else " (held)"
             notes.append(f"{name} = {value:.4g}{unit}{held} lies far outside its typical range ({lo:g} to "
                          f"{hi:g}{unit}): check the units of the data (their column headers) and of the values given")
     return notes
