@@ -56,9 +56,9 @@ def _at(items) -> dict[str, float | str]:
         if isinstance(number, float) and not math.isfinite(number):
             raise UsageError(f"--at: {name} must be a finite number (a value of the sweep's grid), got {value!r}")
         if name in out:
-            raise UsageError(f"--at: {name} given twice ({out[name]:g} and {number:g}); a map fixes each dimension "
-                             "once" if isinstance(number, float) and isinstance(out[name], float) else
-                             f"--at: {name} given twice; a map fixes each dimension once")
+            both = (f" ({out[name]:g} and {number:g})" if isinstance(number, float) and isinstance(out[name], float)
+                    else "")
+            raise UsageError(f"--at: {name} given twice{both}; a map fixes each dimension once")
         out[name] = number
     return out
 

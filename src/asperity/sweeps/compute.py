@@ -68,38 +68,28 @@ def compute_set(kind: str, params: dict, axis: str, values: np.ndarray) -> dict:
         if p.get("w") is not None or p.get("b") is not None:  # the material's, replaced
             body = contact_material(body, w=p.get("w"), b=p.get("b"))
         contact = PhysicalContact(body, Surface(p["sigma_s"], p["R"], p["eta"], p["area"]))
-        curve = _load_curve(contact, values) if axis == "P_N" else contact.separation_curve(values)
+        # SI names: d_m, P_N, F_N, mu, area_m2, pressure_Pa, contacts
+        out = _load_columns(contact, values) if axis == "P_N" else contact.separation_curve(values).columns()
         po = contact.pull_off()
-        out = curve.columns()  # SI names: d_m, P_N, F_N, mu, area_m2, pressure_Pa, contacts
         out.update(pull_off_N=po.force, pull_off_d_m=po.d, alpha=contact.alpha, beta=contact.beta,
                    gamma=contact.gamma)
         return out
     p = params
     model = Model(p["alpha"], p["beta"], p["gamma"], nu=p["nu"], h_over_b=p["h_over_b"],
                   friction=HurtadoKim(*(p[k] for k in _HK)))
-    curve = _load_curve(model, values) if axis == "P" else model.separation_curve(values)
+    out = _load_columns(model, values) if axis == "P" else model.separation_curve(values).columns()
     po = model.pull_off()
-    out = curve.columns()
     out.update(pull_off=po.force, pull_off_d=po.d)
     return out
 
 
-class _Columns:
-    """A curve's columns with NaN rows where it has no equilibrium (see :func:`_load_curve`)."""
-
-    def __init__(self, columns: dict):
-        self._columns = columns
-
-    def columns(self) -> dict:
-        return self._columns
-
-
-def _load_curve(model, P: np.ndarray):
-    """``model.load_curve(P)``, or where some loads lie below its least load, the curve at the
-    others with NaN at those and an :class:`AsperityWarning` saying so (a user trial: one load
-    below the pull-off blanked the whole set, the loads it could carry and its pull-off too)."""
+def _load_columns(model, P: np.ndarray) -> dict:
+    """``model.load_curve(P).columns()``, or where some loads lie below its least load, the
+    columns at the others with NaN at those and an :class:`AsperityWarning` saying so (a user
+    trial: one load below the pull-off blanked the whole set, the loads it could carry and its
+    pull-off too)."""
     try:
-        return model.load_curve(P)
+        return model.load_curve(P).columns()
     except LoadOutOfRange as err:
         first = err
         inside = P > err.floor if err.exclusive else P >= err.floor
@@ -121,7 +111,7 @@ def _load_curve(model, P: np.ndarray):
     axis = "P_N" if "P_N" in columns else "P"
     columns[axis] = np.asarray(P, dtype=float).copy()
     warnings.warn(AsperityWarning(f"{first}: NaN at the {int(np.sum(~inside))} {LOADS_NAN_NOTE}"), stacklevel=2)
-    return _Columns(columns)
+    return columns
 
 
 def compute_chunk(kind: str, sets: list[dict], axis: str, values: np.ndarray, variables: dict) -> dict:
