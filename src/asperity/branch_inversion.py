@@ -109,9 +109,12 @@ def invert_branch(tab: Tabulation, P, grid, Pg, dPg):
 
     Safeguarded Halley steps (the root of the quadratic Taylor polynomial of
     :math:`\bar P`, from the integrals' first two separation derivatives) from
-    :func:`branch_guess`, keeping the bracket.  Once a step is below 1e-5 (the error after
-    it is ~1e-15) the integrals are carried to the new point by a second-order Taylor step,
-    which saves a final pass over the quadrature nodes: one pass usually suffices.  The
+    :func:`branch_guess`, keeping the bracket.  Once a step is below 1e-5 and the
+    polynomial's linear term outweighs its quadratic one (the error after it is then
+    ~1e-15; next to the end of a branch, where :math:`d\bar P/d\bar d \to 0`, a small step
+    alone proves nothing) the integrals are carried to the new point by a second-order
+    Taylor step, which saves a final pass over the quadrature nodes: one pass usually
+    suffices.  The
     branch may fall (loading, :func:`stable_branch`) or rise (e.g. beyond pull-off) from
     ``grid[0]`` to ``grid[-1]``; each load's separation is the first crossing coming from
     ``grid[0]``, the only one where the force is monotone.
@@ -184,14 +187,21 @@ def _invert(tab, P, grid, Pg, dPg, sign=1.0):
         b[active] = np.where(r < 0, xa, b[active])
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             newton = np.where(g < 0, -r / g, np.nan)
-            # Halley: the root of the quadratic Taylor polynomial, error O(step^3).
-            step = np.where(g < 0, -r / (g + 0.5 * h * newton), np.nan)
-        step = np.where(np.abs(step - newton) <= np.abs(newton), step, newton)  # far out: plain Newton
+            # Halley's variant: the root nearest 0 of the quadratic Taylor polynomial
+            # r + g s + h s^2 / 2 (error O(step^3)), in the form free of cancellation; where
+            # the quadratic has no real root, Newton's step (kept to the bracket below).
+            root = np.sqrt(g * g - 2.0 * h * r)
+            quad = -2.0 * r / (g - root)
+        step = np.where(np.isfinite(quad) & (g - root < 0), quad, newton)
         x_new = xa + step
         bad = ~np.isfinite(x_new) | (x_new < a[active]) | (x_new > b[active])
         x_new = np.where(bad, 0.5 * (a[active] + b[active]), x_new)
-        done = ~bad & (np.abs(step) <= 1e-5 * np.maximum(1.0, np.abs(xa)))
+        # Converged once the step is small and the linear term dominates the quadratic one:
+        # near the end of a branch (dP/dd -> 0) a small step says nothing about the error.
+        done = ~bad & (np.abs(step) <= 1e-5 * np.maximum(1.0, np.abs(xa))) & (np.abs(h * step) <= np.abs(g))
         done |= (b[active] - a[active]) <= 1e-14 * np.maximum(1.0, np.abs(xa))
+        done |= r == 0.0
+        bad |= r == 0.0
         step = np.where(bad, 0.0, step)
         fin = active[done]
         d[fin] = np.where(bad[done], xa[done], x_new[done])

@@ -40,6 +40,7 @@ __all__ = ["CurveResult", "COLUMNS", "PullOff", "Model", "separation_curve", "lo
 #: Most loads or separations one curve takes (as on the command line): beyond, a curve costs
 #: minutes and gigabytes (1e7 loads: 146 s, 3.6 GB), so it is refused at once.
 MAX_POINTS = 10**6
+PULL_OFF_RTOL = 1e-12  #: loads this far (relative) below minus the pull-off force are taken as it
 
 class Model:
     """The multi-asperity contact and friction model for one parameter set, cached.
@@ -193,11 +194,12 @@ class Model:
         self._pull_off.setdefault(d_hi, branch.pull_off if branch.pull_off is not None
                                   else PullOff(0.0, float("nan"), False))
         floor = branch.P[-1]
-        if P.min() < floor:
+        # another search's pull-off (a fresh pull_off(): its table differs) may lie just below
+        if P.min() < floor - PULL_OFF_RTOL * abs(floor):
             d_end = None if floor < 0 else float(branch.grid[-1])
             what = "minus the pull-off force" if d_end is None else f"the force at d/sigma = {d_end:.4g}"
             raise LoadOutOfRange(floor, P.min(), what, d_end=d_end)
-        d, sums = invert_branch(branch.tab, P, branch.grid, branch.P, branch.dP)
+        d, sums = invert_branch(branch.tab, np.maximum(P, floor), branch.grid, branch.P, branch.dP)
         sums[:, 1] = P  # solved for to rounding; report the load asked for
         # Interaction hook: the apparent separation is the local one less the uniform sinking.
         return self._result(d - self.interaction.shift(P), sums, d)
@@ -290,7 +292,8 @@ def load_curve(P, alpha, beta, gamma=0.0, *, nu=0.3, h_over_b=1.0, friction=None
     ----------
     P : array_like
         Loads :math:`P/(NGb^2)` per asperity, positive compressive: > 0 without adhesion;
-        with adhesion down to minus the pull-off force (:func:`pull_off`).
+        with adhesion down to minus the pull-off force (:func:`pull_off`; up to 1e-12 of it
+        below, its rounding, is taken as it).
     alpha : float
         Roughness :math:`\alpha = (\sigma/R)^{1/2} > 0` (Eq 7).
     beta : float

@@ -74,9 +74,12 @@ class LoadOutOfRange(ValueError):
         self.units, self.d_end = units, d_end
 
     def __str__(self) -> str:
-        bound = f"> {self.floor:g}{self.units}" if self.exclusive else f">= {self.floor:.6g}{self.units}"
-        return (f"P (load) must be {bound} ({self.what}): no equilibrium under a smaller load; "
-                f"got min {self.got:g}{self.units}")
+        k = 6  # enough digits to tell the load from the floor
+        while k < 17 and f"{self.floor:.{k}g}" == f"{self.got:.{k}g}":
+            k += 1
+        floor, got = (f"{x:.{k}g}{self.units}" for x in (self.floor, self.got))
+        bound = f"> {floor}" if self.exclusive else f">= {floor}"
+        return f"P (load) must be {bound} ({self.what}): no equilibrium under a smaller load; got min {got}"
 
 
 class Branch(NamedTuple):
