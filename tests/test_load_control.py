@@ -10,10 +10,10 @@ from hypothesis import strategies as st
 import asperity
 from asperity.asperity_law import ModelParameters
 from asperity.load_control import (
+    LoadOutOfRange,
     bracket_low,
     branch_guess,
     force_grid,
-    LoadOutOfRange,
     invert_branch,
     stable_branch,
     start_separation,
