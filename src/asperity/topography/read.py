@@ -29,7 +29,9 @@ as a NASA SRTM ``.hgt`` elevation tile (which has no header) unless it is named 
 
 from __future__ import annotations
 
+import codecs
 import contextlib
+import io
 import logging
 import os
 import warnings
@@ -126,22 +128,35 @@ def read_topography(path, *, physical_sizes=None, unit=None, channel_index=None,
 
 
 def _note_index_lines(topo, name: str) -> None:
-    """A note when a map's first or last line or column counts 0, 1, 2, ... or 1, 2, 3, ... (from
-    its first or second value): a header of column numbers (or a column of row numbers) read
-    as heights (a user trial: a
-    text matrix with the line '0 1 ... 255' on top gave a 256 x 257 map and R 133 times too
-    small, flagged only by the methods' disagreement)."""
+    """A note when a map's first or last line or column counts 0, 1, 2, ... or 1, 2, 3, ..., or
+    runs in even steps where the line next to it does not (from its first or second value): a
+    header of indices or coordinates read as heights (user trials: a line '0 1 ... 255' on top
+    gave R 133 times too small, coordinates in um eta 5 times too large, flagged only by the
+    methods' disagreement)."""
     h = np.ma.getdata(topo.heights())
     for axis, what in ((1, "line"), (0, "column")):  # a text matrix's lines are along the second axis
-        for index, where in ((0, "first"), (-1, "last")):
-            line = np.take(h, index, axis=axis)
-            for values in (line, line[1:]):  # the whole line, or after a corner cell (a header and an index)
-                if values.size >= 8 and any(np.array_equal(values, np.arange(start, start + values.size))
-                                            for start in (0, 1)):
-                    warnings.warn(f"{name}: its {where} {what} counts {values[0]:g}, {values[1]:g}, {values[2]:g}, "
-                                  f"... {values[-1]:g}: a header of indices read as heights?  Remove it from the file",
-                                  AsperityWarning, stacklevel=3)
-                    return
+        for index, inner, where in ((0, 1, "first"), (-1, -2, "last")):
+            line, next_line = np.take(h, index, axis=axis), np.take(h, inner, axis=axis)
+            for skip in (0, 1):  # the whole line, or after a corner cell (a header and an index)
+                values = line[skip:]
+                if values.size < 8:
+                    continue
+                if any(np.array_equal(values, np.arange(start, start + values.size)) for start in (0, 1)):
+                    found = f"counts {values[0]:g}, {values[1]:g}, {values[2]:g}, ... {values[-1]:g}: a header of indices"
+                elif _even_steps(values) and not _even_steps(next_line[skip:]):
+                    found = f"runs from {values[0]:g} to {values[-1]:g} in even steps: a header of coordinates"
+                else:
+                    continue
+                warnings.warn(f"{name}: its {where} {what} {found} read as heights?  Remove it from the file",
+                              AsperityWarning, stacklevel=3)
+                return
+
+
+def _even_steps(values) -> bool:
+    """Monotone in steps equal to 1 % (coordinates printed to a few digits)."""
+    step = np.diff(values)
+    mean = step.mean()
+    return bool(mean != 0 and np.all(step * mean > 0) and np.ptp(step) <= 0.01 * abs(mean))
 
 
 def _note_pixel_shape(topo, name: str) -> None:
@@ -243,7 +258,7 @@ def _quiet_readers():
 def _read(st, name, fmt, physical_sizes, unit, channel_index):
     """Open ``name`` with SurfaceTopography; every failure becomes a ValueError naming the file."""
     try:
-        with _quiet_readers(), open(name, "rb") as fobj, st.open_topography(fobj, format=fmt) as reader:
+        with _quiet_readers(), _open_bytes(name) as fobj, st.open_topography(fobj, format=fmt) as reader:
             if type(reader).__name__ == "HGTReader" and not name.lower().endswith(".hgt"):
                 raise ValueError(f"{name}: not a readable topography file (only its size matches a headerless "
                                  f"NASA SRTM .hgt tile; name it *.hgt if it is one)")
@@ -261,6 +276,28 @@ def _read(st, name, fmt, physical_sizes, unit, channel_index):
         raise ValueError(f"{name}: cannot read topography ({_reason(err)})") from None
     except Exception as err:  # SurfaceTopography raises many exception types
         raise ValueError(f"{name}: not a readable topography file ({_reason(err)})") from None
+
+
+_BOMS = ((codecs.BOM_UTF8, "utf-8-sig"), (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
+
+
+def _open_bytes(name):
+    """The file's bytes; a text file with a byte-order mark as UTF-8 without it (a user trial:
+    SurfaceTopography's text reader took a UTF-8 mark and the first scan line for a header and
+    dropped them, 255 of 256 lines read with no note; UTF-16, a Windows export, was refused)."""
+    fobj = open(name, "rb")
+    head = fobj.read(3)
+    encoding = next((enc for bom, enc in _BOMS if head.startswith(bom)), None)
+    if encoding is None:
+        fobj.seek(0)
+        return fobj
+    with fobj:
+        raw = head + fobj.read()
+    try:
+        return io.BytesIO(raw.decode(encoding).encode("utf-8"))
+    except UnicodeDecodeError:
+        raise ValueError(f"{name}: not a readable topography file (it starts with a {encoding} byte-order "
+                         "mark but is not such text)") from None
 
 
 def _channel(name, reader, channel_index):
@@ -286,13 +323,14 @@ def _reason(err) -> str:
 
 
 def _check_metadata(name, channel, physical_sizes, unit):
-    """Reject empty or tiny channels and missing or doubled physical sizes/units before reading heights."""
+    """Reject empty or tiny channels, missing or doubled sizes/units before reading heights."""
     grid = channel.nb_grid_pts
     if grid is None or len(grid) == 0 or min(grid) == 0:
         raise ValueError(f"{name}: contains no height data (grid {grid})")
     if min(grid) < MIN_POINTS:
+        hint = "; a line scan is one column of heights, not one line" if len(grid) == 2 and grid[1] == 1 else ""
         raise ValueError(f"{name}: too few points for summit statistics: grid {tuple(grid)}; need at least "
-                         f"{MIN_POINTS} along every axis")
+                         f"{MIN_POINTS} along every axis{hint}")
     if channel.physical_sizes is None and physical_sizes is None:
         raise ValueError(f"{name}: the file does not store the scan size; pass physical_sizes=(Lx, Ly) for a map "
                          f"or (L,) for a line scan, in metres or with units (e.g. ('5um', '5um')) "
