@@ -142,7 +142,8 @@ def _note_index_lines(topo, name: str) -> None:
                 if values.size < 8:
                     continue
                 if any(np.array_equal(values, np.arange(start, start + values.size)) for start in (0, 1)):
-                    found = f"counts {values[0]:g}, {values[1]:g}, {values[2]:g}, ... {values[-1]:g}: a header of indices"
+                    first = ", ".join(f"{v:g}" for v in values[:3])
+                    found = f"counts {first}, ... {values[-1]:g}: a header of indices"
                 elif _even_steps(values) and not _even_steps(next_line[skip:]):
                     found = f"runs from {values[0]:g} to {values[-1]:g} in even steps: a header of coordinates"
                 else:
@@ -282,9 +283,8 @@ _BOMS = ((codecs.BOM_UTF8, "utf-8-sig"), (codecs.BOM_UTF16_LE, "utf-16"), (codec
 
 
 def _open_bytes(name):
-    """The file's bytes; a text file with a byte-order mark as UTF-8 without it (a user trial:
-    SurfaceTopography's text reader took a UTF-8 mark and the first scan line for a header and
-    dropped them, 255 of 256 lines read with no note; UTF-16, a Windows export, was refused)."""
+    """The file; a text file with a byte-order mark as UTF-8 without it (a user trial: a UTF-8
+    mark cost the first scan line, unnoted; UTF-16, a Windows export, was refused)."""
     fobj = open(name, "rb")
     head = fobj.read(3)
     encoding = next((enc for bom, enc in _BOMS if head.startswith(bom)), None)
@@ -323,7 +323,7 @@ def _reason(err) -> str:
 
 
 def _check_metadata(name, channel, physical_sizes, unit):
-    """Reject empty or tiny channels, missing or doubled sizes/units before reading heights."""
+    """Reject empty or tiny channels, missing or doubled sizes/units, before reading heights."""
     grid = channel.nb_grid_pts
     if grid is None or len(grid) == 0 or min(grid) == 0:
         raise ValueError(f"{name}: contains no height data (grid {grid})")
