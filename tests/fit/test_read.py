@@ -208,3 +208,90 @@ def test_long_decimal_cells_are_exact_too(tmp_path):
     path.write_text("load [nN],friction [nN]\n" + "".join(f"{t},1\n" for t in texts))
     d = read_data(str(path))
     assert d.x.tolist() == [float(Decimal(t).scaleb(-9)) for t in texts]
+
+
+def test_spreadsheet_exports_read_as_the_plain_file(tmp_path):
+    """A user trial with files as spreadsheets and instruments write them: Excel's padding
+    (',,' on every line, empty rows), UTF-16 (Windows 'Unicode text'), a semicolon file
+    with decimal commas (German/French Excel), '%' comments (MATLAB): each refused before,
+    now each read as the plain file, with a note where something was interpreted."""
+    rows = [(-8.0, 4.299194), (-6.0, 5.229111), (10.0, 9.5), (50.0, 14.787114)]
+    plain = "load (nN),friction (nN)\n" + "".join(f"{p:.6f},{f:.6f}\n" for p, f in rows)
+    ref = read_data(write(tmp_path, plain, "plain.csv"))
+    padded = plain.replace("\n", ",,\n") + ",,\n,,\n"
+    semi = plain.replace(",", ";").replace(".", ",")
+    cases = {"padded.csv": (padded.encode(), None),
+             "utf16.csv": (plain.replace(",", "\t").replace("\n", "\r\n").encode("utf-16"), None),
+             "semi.csv": (semi.encode(), "read decimal commas as decimal points in the ';'-separated file "
+                                         "('4,299194' is 4.299194)"),
+             "pct.csv": (("% AFM export\n" + plain).encode(), None)}
+    for name, (raw, note) in cases.items():
+        (tmp_path / name).write_bytes(raw)
+        d = read_data(tmp_path / name)
+        np.testing.assert_array_equal(d.x, ref.x)
+        np.testing.assert_array_equal(d.y, ref.y)
+        assert [n.split(": ", 1)[1] for n in d.notes] == ([note] if note else []), (name, d.notes)
+
+
+@pytest.mark.parametrize("first", ["#N/A", "#VALUE!", "#DIV/0!"])
+def test_an_excel_error_cell_is_a_nan_cell_not_a_comment(tmp_path, first):
+    """A user trial: a row starting with '#N/A' was skipped as a comment without a word (and
+    refused when the error was in the second column).  Excel's errors are NaN cells."""
+    path = write(tmp_path, f"P,F\n1,2\n{first},3\n4,5\n")
+    with pytest.raises(ValueError, match="line 3: empty or NaN cell in column 'P'"):
+        read_data(path)
+    d = read_data(path, drop_nan=True)
+    assert d.x.tolist() == [1, 4] and d.n_dropped == 1
+
+
+def test_comment_lines_below_the_header_are_counted(tmp_path):
+    """A user trial: a row whose sample ID starts with '#' vanished as a comment, unnoted."""
+    d = read_data(write(tmp_path, "Sample,R (nm),pull_off (nN)\nA,10,4.9\n#2 (retest),20,9.4\nC,30,14.2\n% end\n"))
+    assert len(d) == 2
+    assert any(n.endswith("skipped 2 comment line(s) below the header (line(s) 3, 5: a line starting with '#' or "
+                          "'%' is a comment)") for n in d.notes), d.notes
+    with pytest.raises(ValueError, match=r"no data rows below the header \(2 line\(s\) below it start with '#'"):
+        read_data(write(tmp_path, "P,F\n#1,2\n#3,4\n"))
+
+
+def test_a_column_of_the_wrong_dimension_is_ignored_beside_a_right_one(tmp_path):
+    """A user trial: a raw 'Lateral force (V)' beside the calibrated friction made the file
+    'ambiguous'; now it is ignored with a note, and still refused on its own."""
+    d = read_data(write(tmp_path, "Load (nN),Friction (nN),Lateral force (V)\n1,2,0.5\n3,4,0.7\n"))
+    assert d.y.tolist() == [2e-9, 4e-9]
+    assert any("ignored column(s) 'Lateral force (V)' (not a unit of friction)" in n for n in d.notes)
+    with pytest.raises(ValueError, match="compatible with N"):
+        read_data(write(tmp_path, "Load (nN),Lateral force (V)\n1,0.5\n"))
+
+
+@pytest.mark.parametrize("header", ["Radius (nm)", "Tip radius (nm)", "R (nm)"])
+def test_a_radius_column_is_the_pull_off_condition(tmp_path, header):
+    d = read_data(write(tmp_path, f"{header},Adhesion force (nN)\n10,4.9\n20,9.4\n"))
+    np.testing.assert_allclose(d.conditions["R_m"], [1e-8, 2e-8])
+
+
+def test_a_text_file_in_another_encoding_is_named(tmp_path):
+    (tmp_path / "l1.csv").write_bytes("load (µN),friction (µN)\n1,2\n".encode("latin-1"))
+    with pytest.raises(ValueError, match=r"l1\.csv: not a text file \(not UTF-8; save it as UTF-8 text\)"):
+        read_data(tmp_path / "l1.csv")
+
+
+def test_conditions_are_checked_by_name_and_unit():
+    """A user trial: conditions={'R': ...} (for 'R_m') was ignored without a word, and unit
+    strings in physical data were refused as 'dimensionless'."""
+    with pytest.raises(ValueError, match="conditions: unknown name 'R'; the names are .*R_m"):
+        pull_off_data([1e-7, 2e-7], physical=True, conditions={"R": [1e-6, 2e-6]})
+    d = pull_off_data([1e-7, 2e-7], physical=True, conditions={"R_m": ["1um", "2 um"]})
+    np.testing.assert_allclose(d.conditions["R_m"], [1e-6, 2e-6])
+
+
+def test_a_condition_the_model_does_not_use_is_noted():
+    """A user trial: a pull-off file's 'E (GPa)' column was read and never used, unnoted."""
+    from asperity.fit import fit_pull_off
+
+    R = np.array([1e-8, 2e-8, 5e-8])
+    data = pull_off_data(1.5 * np.pi * 0.1 * R, physical=True, conditions={"R_m": R, "E_Pa": [1e9] * 3})
+    r = fit_pull_off(data, "jkr", material="Si")
+    assert r.values["w_J_m2"] == pytest.approx(0.1, rel=1e-9)
+    assert [w for w in r.warnings if "ignored condition" in w] == [
+        "pull_off: ignored condition(s) E_Pa: the jkr model has no such parameter"]

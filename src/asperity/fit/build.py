@@ -6,6 +6,7 @@ bounds, expr, shared): the global parameters of :mod:`asperity.fit.engine`, thei
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -73,8 +74,12 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
         model.check(data)
         if np.all(data.y == 0):  # before the starts, which divide by the data (found by a review)
             raise ValueError(f"{data.name}: every {data.y_name} is 0: there is nothing to fit")
-        names = {}
-        for local, spec in model.specs(data).items():
+        names, specs = {}, model.specs(data)
+        unused = [k for k in data.conditions if k not in specs]
+        if unused:  # a user trial: a file's per-row E was read and never used, without a word
+            data = replace(data, notes=(*data.notes, f"{data.name}: ignored condition(s) {', '.join(unused)}: the "
+                                        f"{model.name} model has no such parameter"))
+        for local, spec in specs.items():
             if local in data.conditions:  # given per row by the data
                 continue
             glob = local if (not joint or share_all or local in shared) else f"{local}_{i + 1}"

@@ -29,6 +29,7 @@ import numpy as np
 
 from .._validation import as_float_array, check_bool, check_text
 from ..units import is_quantity, to_si
+from .headers import condition_names
 
 __all__ = ["KINDS", "MAX_ROWS", "Dataset", "friction_load_data", "force_separation_data", "pull_off_data"]
 
@@ -108,7 +109,12 @@ class Dataset:
                 if np.any(err <= 0):
                     raise ValueError(f"{name} (uncertainty) must be > 0 in every row, got min {err.min():g}")
                 set_(self, name, err)
-        conditions = {str(k): _vector(v, f"conditions[{k!r}]") for k, v in dict(self.conditions).items()}
+        known = {fit: si for fit, si in condition_names().values()}
+        conditions = {}
+        for k, v in dict(self.conditions).items():
+            if k not in known:  # a user trial: a typo ('R' for 'R_m') was ignored without a word
+                raise ValueError(f"conditions: unknown name {k!r}; the names are {', '.join(sorted(known))}")
+            conditions[k] = _vector(v, f"conditions[{k!r}]", self.physical, known[k])
         for k, v in conditions.items():
             if v.size != x.size:
                 raise ValueError(f"conditions[{k!r}] must have one value per row ({x.size}), got {v.size}")
@@ -152,14 +158,14 @@ class Dataset:
 _SI_UNITS = {"P": "N", "F": "N", "force": "N", "d": "m", "mu": ""}
 
 
-def _vector(value, name, physical=False) -> np.ndarray:
+def _vector(value, name, physical=False, si=None) -> np.ndarray:
     listed = isinstance(value, list | tuple) and any(is_quantity(v) or isinstance(v, str) for v in value)
     if is_quantity(value) or listed:  # a review: nN quantities lost their unit (values 1e9 too large)
         base = name[:-4] if name.endswith("_err") else name
         if physical is not True:
             raise ValueError(f"{name} is a quantity ({value!r}) but the data are dimensionless: pass "
                              "physical=True for SI data, or plain numbers in the model's units")
-        value = to_si(value, _SI_UNITS[base], name)
+        value = to_si(value, _SI_UNITS[base] if si is None else si, name)
     arr = as_float_array(value, name)
     if arr.ndim != 1:
         raise ValueError(f"{name} must be 1-D, got shape {arr.shape}")

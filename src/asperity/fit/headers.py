@@ -52,6 +52,8 @@ def condition_names() -> dict:
             continue
         out[q.name.lower()] = (q.si_name, q.si_unit)
         out[q.si_name.lower()] = (q.si_name, q.si_unit)
+    for alias in ("radius", "tip_radius"):  # 'Tip radius (nm)' (a user trial: ignored, with a note)
+        out[alias] = out["r_m"]
     return out
 
 

@@ -14,9 +14,14 @@ r"""Reading measured data from CSV files: columns found by their header names an
   (``{"load": "mN", "friction": "nN", "separation": "nm"}``; ``load`` also serves normal
   and pull-off forces); an uncertainty column without a unit has its value column's unit.
 
-Comment lines start with ``#``; the delimiter is a comma, a tab or a semicolon (that of
-the header line).  Refused, with a :class:`ValueError` naming the row and column: a missing,
-unreadable or empty file, a missing or ambiguous column (``F`` and ``mu``; ``P`` and
+Comment lines start with ``#`` or ``%`` (those below the header are counted in a note;
+Excel's error values such as ``#N/A`` are cells, read as NaN); the delimiter is a comma, a
+tab or a semicolon (that of the header line); in a semicolon-separated file a decimal comma
+(``4,25``) is read as a decimal point, with a note.  Columns with no name and no values (a
+spreadsheet's padding) are dropped; a column whose unit has the wrong dimension
+(``lateral force (V)``) is ignored beside one of the right dimension, else refused.
+Refused, with a :class:`ValueError` naming the row and column: a missing, unreadable or
+empty file (UTF-8 or, with its byte-order mark, UTF-16 text), a missing or ambiguous column (``F`` and ``mu``; ``P`` and
 ``load [mN]``), a non-numeric or infinite cell, a NaN (empty) cell unless
 ``drop_nan=True`` (then the row is dropped and counted), negative friction or
 coefficient, a coefficient at a load <= 0, a zero or negative uncertainty or pull-off
@@ -27,9 +32,11 @@ ignored and named in :attr:`Dataset.notes`.
 
 from __future__ import annotations
 
+import codecs
 import csv
 import math
 import os
+import re
 
 import numpy as np
 
@@ -75,13 +82,15 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
         if key not in ("load", "friction", "separation"):
             raise ValueError(f"units: unknown role {key!r}; give load, friction or separation")
     text, name = _read_text(path)
-    lines = [(i + 1, line) for i, line in enumerate(text.splitlines())
-             if line.strip() and not line.lstrip().startswith("#")]
+    every = text.splitlines()
+    lines = [(i + 1, line) for i, line in enumerate(every)  # ',,' is a spreadsheet's empty row
+             if line.strip(" \t,;") and not _is_comment(line)]
     if not lines:
         raise ValueError(f"{name}: no header line (the file is empty or holds only comments)")
     header_line, header = lines[0]
+    skipped = [i + 1 for i, line in enumerate(every) if i + 1 > header_line and _is_comment(line)]
     delimiter = next((d for d in (",", "\t", ";") if d in header), ",")
-    rows = list(csv.reader([line for _, line in lines], delimiter=delimiter))
+    rows = _drop_padding(list(csv.reader([line for _, line in lines], delimiter=delimiter)))
     headers = [h.strip() for h in rows[0]]
     if len(headers) == 1 and len(rows) > 1 and rows[1] and len(rows[1][0].split()) > 1:  # space-separated
         raise ValueError(f"{name}: the header {headers[0]!r} is one column: separate the columns with ',', ';' "
@@ -91,7 +100,8 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
         raise ValueError(f"{name}: column {dup!r} appears twice in the header")
     data_rows = rows[1:]
     if not data_rows:
-        raise ValueError(f"{name}: no data rows below the header")
+        why = f" ({len(skipped)} line(s) below it start with '#' or '%', which marks a comment)" if skipped else ""
+        raise ValueError(f"{name}: no data rows below the header{why}")
     if len(data_rows) > MAX_ROWS:
         raise ValueError(f"{name}: {len(data_rows)} rows, more than MAX_ROWS = {MAX_ROWS}")
     columns, conditions, ignored = _columns(headers, units, name)
@@ -100,18 +110,19 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
         used = _used(columns, kind, name)
     except ValueError as err:  # say which columns were not recognised ('load (nn)': a typo)
         if ignored and "missing column" in str(err):
-            raise ValueError(f"{err} (not recognised: {', '.join(map(repr, ignored))})") from None
+            raise ValueError(f"{err} (not recognised: {_shown(ignored)})") from None
         raise
     physical = _physical(columns, used, name)
     values = {key: [] for key in (*used, *conditions)}
     index = {**{k: columns[k][0] for k in used}, **{k: v[0] for k, v in conditions.items()}}
     factor = {**{k: columns[k][1] for k in used}, **{k: v[1] for k, v in conditions.items()}}
-    dropped = 0
+    dropped, commas = 0, []
     for r, row in enumerate(data_rows):
         line_no = lines[r + 1][0]
         if len(row) != len(headers):
             raise ValueError(f"{name}, line {line_no}: {len(row)} cells, the header has {len(headers)}")
-        cells = {k: _number(row[i], name, line_no, headers[i]) for k, i in index.items()}
+        texts = {k: _decimal_point(row[i], delimiter, commas) for k, i in index.items()}
+        cells = {k: _number(texts[k], name, line_no, headers[index[k]]) for k in index}
         if any(np.isnan(v) for v in cells.values()):
             if not drop_nan:
                 bad = next(headers[index[k]] for k, v in cells.items() if np.isnan(v))
@@ -120,15 +131,56 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
             dropped += 1
             continue
         for k, v in cells.items():
-            values[k].append(to_si_exact(v, factor[k], row[index[k]]))
+            values[k].append(to_si_exact(v, factor[k], texts[k]))
     if not values[used[0]]:
         raise ValueError(f"{name}: every row holds a NaN; nothing left to fit")
     notes = []
     if ignored:
-        notes.append(f"{name}: ignored column(s) {', '.join(map(repr, ignored))}")
+        notes.append(f"{name}: ignored column(s) {_shown(ignored)}")
     if dropped:
         notes.append(f"{name}: dropped {dropped} row(s) holding NaN")
+    if skipped:  # a user trial: a row '#N/A,...' or '#2 (retest),...' vanished without a word
+        shown = ", ".join(map(str, skipped[:5])) + (", ..." if len(skipped) > 5 else "")
+        notes.append(f"{name}: skipped {len(skipped)} comment line(s) below the header (line(s) {shown}: a line "
+                     "starting with '#' or '%' is a comment)")
+    if commas:
+        notes.append(f"{name}: read decimal commas as decimal points in the ';'-separated file ({commas[0]!r} is "
+                     f"{commas[0].replace(',', '.')})")
     return _dataset(kind, values, used, conditions, physical, name, dropped, notes)
+
+
+#: Excel's error values: data cells (NaN, dropped with drop_nan), not comments.
+_EXCEL_ERRORS = ("#n/a", "#value!", "#div/0!", "#ref!", "#name?", "#num!", "#null!", "#spill!", "#calc!",
+                 "#getting_data")
+_DECIMAL_COMMA = re.compile(r"\s*[+-]?\d+,\d+(?:[eE][+-]?\d+)?\s*")
+
+
+def _is_comment(line: str) -> bool:
+    text = line.lstrip().lower()
+    return text.startswith(("#", "%")) and not text.startswith(_EXCEL_ERRORS)
+
+
+def _decimal_point(cell: str, delimiter: str, commas: list) -> str:
+    """A cell with a decimal comma ('4,299194') as a number with a point, in a ';'-separated
+    file only (a spreadsheet's in a language that writes decimal commas); the first counted."""
+    if delimiter == ";" and "," in cell and _DECIMAL_COMMA.fullmatch(cell):
+        if not commas:
+            commas.append(cell.strip())
+        return cell.replace(",", ".")
+    return cell
+
+
+def _drop_padding(rows):
+    """The rows without columns that have no name and no values (a spreadsheet's padding,
+    'load (nN),friction (nN),,': a user trial got "column '' appears twice")."""
+    drop = {j for j, h in enumerate(rows[0]) if not h.strip()
+            and not any(len(r) > j and r[j].strip() for r in rows[1:])}
+    return [[c for j, c in enumerate(r) if j not in drop] for r in rows] if drop else rows
+
+
+def _shown(ignored) -> str:
+    """The ignored headers, quoted, each with its reason if it has one."""
+    return ", ".join(f"{h!r}" if isinstance(h, str) else f"{h[0]!r} ({h[1]})" for h in ignored)
 
 
 def _read_text(path):
@@ -143,10 +195,12 @@ def _read_text(path):
         raise ValueError(f"path: cannot read data file {name!r}: {err.strerror or err}") from None
     if len(raw) > 64 * 1024 * 1024:
         raise ValueError(f"{shown}: larger than 64 MB; not a data file of at most {MAX_ROWS} rows")
+    encoding = "utf-16" if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)) else "utf-8-sig"
     try:
-        text = raw.decode("utf-8-sig")
+        text = raw.decode(encoding)
     except UnicodeDecodeError:
-        raise ValueError(f"{shown}: not a text file (not UTF-8)") from None
+        raise ValueError(f"{shown}: not a text file (not {encoding.removesuffix('-sig').upper()}; save it as "
+                         "UTF-8 text)") from None
     if "\x00" in text:
         raise ValueError(f"{shown}: not a text file (holds NUL bytes)")
     return text, shown
@@ -157,7 +211,7 @@ def _columns(headers, units, name):
 
     ``physical`` is None for a friction coefficient (dimensionless either way).
     """
-    columns, conditions, ignored, pending = {}, {}, [], []
+    columns, conditions, ignored, pending, misfits = {}, {}, [], [], []
     cond_names = condition_names()
     for i, header in enumerate(headers):
         role, is_err, unit, suffix_unit, symbol, base = classify_header(header)
@@ -168,13 +222,19 @@ def _columns(headers, units, name):
                 ignored.append(header)
             continue
         key = f"{role}_err" if is_err else role
+        if unit is not None and suffix_unit is not None:
+            raise ValueError(f"{name}: column {header!r} has two units")
+        unit = unit if unit is not None else suffix_unit
+        if unit is not None and role != "mu":
+            try:
+                unit_factor(unit, role, header)
+            except ValueError as err:  # 'Lateral force (V)' beside 'Friction (nN)': a raw signal
+                misfits.append((key, header, err))
+                continue
         if key in columns or key in pending:
             first = columns[key][3] if key in columns else next(h for k, h, _ in pending if k == key)
             raise ValueError(f"{name}: ambiguous columns {first!r} and {header!r} (both the "
                              f"{key.replace('_', ' ')}); keep one")
-        if unit is not None and suffix_unit is not None:
-            raise ValueError(f"{name}: column {header!r} has two units")
-        unit = unit if unit is not None else suffix_unit
         if role == "mu":
             columns[key] = (i, unit_factor(unit or "", "mu", header), None, header)
             continue
@@ -196,6 +256,10 @@ def _columns(headers, units, name):
             raise ValueError(f"{name}: column {header!r} has no unit: write it in brackets ({example!r}) or give "
                              f"the {UNIT_FLAGS[role]} unit (units={{'{UNIT_FLAGS[role]}': ...}}, "
                              f"--{UNIT_FLAGS[role]}-unit)")
+    for key, header, err in misfits:  # ignored beside a column of the right dimension, else the error
+        if key not in columns and all(k != key for k, _, _ in pending):
+            raise err
+        ignored.append((header, f"not a unit of {key.replace('_', ' ')}"))
     for key, header, i in pending:
         value = columns.get(key.removesuffix("_err"))
         factor, physical = (value[1], value[2]) if value is not None else (1.0, False)
@@ -263,7 +327,7 @@ def _physical(columns, used, name):
 
 def _number(cell: str, name, line_no, header) -> float:
     text = cell.strip()
-    if text.lower() in _NAN_TEXT:
+    if text.lower() in _NAN_TEXT or text.lower() in _EXCEL_ERRORS:
         return float("nan")
     try:
         value = strict_float(text)
