@@ -393,3 +393,18 @@ def test_all_zero_friction_is_refused_before_any_start(tmp_path, rows):
         warnings.simplefilter("error")
         with pytest.raises(ValueError, match="every F_N is 0: there is nothing to fit"):
             fit_friction_load(str(path), "amontons")
+
+
+def test_a_held_parameter_without_a_value_is_refused_not_filled_from_the_data(tmp_path):
+    """A user trial: vary=['w_J_m2'] on JKR friction data held tau at a start the fit had made
+    from the data (6.75e7 Pa for 5e7), and w came out 0.026 for 0.05, unnoted.  A held
+    parameter is the user's to give."""
+    from asperity.fit import friction_load_data
+
+    P = np.linspace(-5e-9, 5e-8, 12)
+    data = friction_load_data(P, 5e7 * np.pi * 1e-16 * (1 + P / 1e-7), physical=True)
+    with pytest.raises(ValueError, match=r"parameter 'tau_Pa' \(.*\) is held \(not in vary\) and has no value: "
+                                         r"give it \(fix tau_Pa=\.\.\.\) or vary it too"):
+        fit_friction_load(data, "jkr", material="Si", fix={"R_m": 2e-8}, vary=["w_J_m2"])
+    r = fit_friction_load(data, "jkr", material="Si", fix={"R_m": 2e-8, "tau_Pa": 5e7}, vary=["w_J_m2"], ci="wald")
+    assert r.values["tau_Pa"] == 5e7

@@ -128,6 +128,8 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
         if p.vary and p.expr is None and name not in start and p.value is not None and not p.lo <= p.value <= p.hi \
                 and name in bounds:
             p.value = _inside(p.value, p.lo, p.hi, p.log)
+    if not any(p.vary and p.expr is None for p in params.values()):
+        raise ValueError("no parameter varies: give at least one in vary (--vary)")
     _check_values(params)
     problem = Problem(terms, params, [resolve_weights(t.data, weights) for t in terms], loss)
     n_free = len(problem.free)
@@ -194,13 +196,17 @@ def _fill_starts(terms, params):
             continue
         rows = {k: float(np.median(v)) for k, v in term.data.conditions.items()}
         filled = term.model.start(term.data, {**local, **rows})
-        for loc, glob in term.names.items():
-            if params[glob].value is None and filled.get(loc) is not None:
+        for loc, glob in term.names.items():  # a held parameter is the user's to give (a user trial:
+            # vary=['w_J_m2'] held tau at a start made from the data, unnoted)
+            if params[glob].value is None and params[glob].vary and filled.get(loc) is not None:
                 params[glob].value = float(filled[loc])
 
 
 def _check_values(params):
     for name, p in params.items():
+        if p.value is None and p.expr is None and not p.vary:
+            raise ValueError(f"parameter {name!r} ({p.spec.meaning}, {p.spec.unit}) is held (not in vary) and has "
+                             f"no value: give it (fix {name}=...) or vary it too")
         if p.value is None and p.expr is None:
             raise ValueError(f"parameter {name!r} ({p.spec.meaning}, {p.spec.unit}) has no value: give it "
                              f"(fix {name}=... to hold it, or start {name}=... to vary it from there)")

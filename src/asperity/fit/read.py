@@ -203,6 +203,8 @@ def _read_text(path):
                          "UTF-8 text)") from None
     if "\x00" in text:
         raise ValueError(f"{shown}: not a text file (holds NUL bytes)")
+    if encoding == "utf-16" and not any(c.isascii() and c.isalnum() for c in text):
+        raise ValueError(f"{shown}: not a text file (no letter or digit after its UTF-16 byte-order mark)")
     return text, shown
 
 
