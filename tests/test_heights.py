@@ -140,3 +140,17 @@ def test_densities_far_out_are_their_limits_and_nan_is_refused(dist):
             getattr(dist, method)(np.array([0.0, np.nan]), *args)
         with pytest.raises(ValueError, match="^z must be"):
             getattr(dist, method)("1", *args)
+
+
+def test_gw_moment_quadrature_checks_its_arguments():
+    """A user trial: the public quadrature checked nothing (NaN gave 0, order -2 gave 8e18,
+    d = -inf gave inf, None an AttributeError)."""
+    g = Gaussian()
+    for kwargs, error, match in (({"d": np.nan}, ValueError, "^d"), ({"d": -np.inf}, ValueError, "^d"),
+                                 ({"d": "a"}, ValueError, "^d"), ({"order": -2}, ValueError, r"order must lie in"),
+                                 ({"dist": None}, TypeError, "dist must be an asperity.heights.HeightDistribution")):
+        args = {"dist": g, "d": 0.5, "order": 1.0, **kwargs}
+        with pytest.raises(error, match=match):
+            gw_moment_quadrature(args["dist"], args["d"], args["order"])
+    assert gw_moment_quadrature(g, np.array([]), 1.0).shape == (0,)
+    assert float(gw_moment_quadrature(g, 0.5, 1.0)) == pytest.approx(float(g.moment(0.5, 1.0)), rel=1e-12)
