@@ -85,3 +85,12 @@ def test_bad_radius():
         hk_friction_stress([-1.0])
     with pytest.raises(ValueError, match="a_bar"):
         hk_friction_stress([np.nan])
+
+
+@pytest.mark.parametrize("tau, match", [(np.array([0.1, 0.2]), "tau must be a scalar"), (-0.1, "tau"),
+                                        (float("nan"), "tau"), ("0.1", "tau"), (None, "tau")])
+def test_constant_shear_takes_one_positive_number(tau, match):
+    """A user trial: an array was accepted and failed later in NumPy's words."""
+    with pytest.raises(ValueError, match=match):
+        ConstantShear(tau)
+    assert ConstantShear(np.float64(0.02)) == ConstantShear(0.02)

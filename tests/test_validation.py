@@ -22,10 +22,16 @@ u = pint.UnitRegistry()
     (float("nan"), "finite"), ([1.0, float("inf")], "finite"), ([], "must not be empty"),
     ([1.0, True], "boolean"), ([[1.0], [np.True_]], "boolean"), ([1.0, [2.0, 3.0]], "real number"),
     (np.ma.masked_array([1.0, 2.0], [False, True]), "masked"),
+    pytest.param(10**400, "finite", id="int-1e400"), pytest.param([1.0, -10**400], "finite", id="list-int-1e400"),
+    pytest.param(np.longdouble("1e400"), "finite", id="longdouble-1e400"),  # a user trial
 ])
 def test_as_float_array_rejects(value, message):
-    with pytest.raises(ValueError, match=message):
-        as_float_array(value, "x")
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a long double beyond the doubles leaked NumPy's overflow warning
+        with pytest.raises(ValueError, match=message):
+            as_float_array(value, "x")
 
 
 def test_scalar_positive_converts_units():

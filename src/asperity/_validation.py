@@ -83,7 +83,10 @@ def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray
     if np.iscomplexobj(raw):
         raise ValueError(f"{name} must be a real number, got a complex value {_short_repr(value)}")
     try:
-        arr = raw.astype(float)
+        with np.errstate(over="ignore"):  # a long double or an int beyond the doubles: refused as infinite below
+            arr = raw.astype(float)
+    except OverflowError:  # a Python int beyond the doubles (10**400): a user trial got OverflowError
+        raise ValueError(f"{name} must be finite (no NaN or infinity), got {_short_repr(value)}") from None
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a real number or an array of real numbers, "
                          f"got {_short_repr(value)}") from None

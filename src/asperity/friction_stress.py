@@ -27,7 +27,7 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
-from ._validation import as_float_array, check_finite_result, check_positive, check_scalar_positive, ufunc_result
+from ._validation import as_float_array, check_finite_result, check_scalar_positive, ufunc_result
 
 __all__ = [
     "TAU_F1",
@@ -210,8 +210,8 @@ class ConstantShear:
 
     tau: float = TAU_F1
 
-    def __post_init__(self):
-        check_positive(self.tau, "tau")
+    def __post_init__(self):  # one number (an array failed later, in NumPy's words: a user trial)
+        object.__setattr__(self, "tau", check_scalar_positive(self.tau, "tau"))
 
     def stress(self, a_bar):
         """The constant stress, broadcast to the shape of ``a_bar``."""
