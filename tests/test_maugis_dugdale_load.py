@@ -188,3 +188,28 @@ def test_a_load_ulps_above_the_pull_off_is_solved(lam, ulps):
     A2, P2, D2 = md.md_curve(t, lam)
     np.testing.assert_allclose(P2, [P], rtol=1e-12, atol=1e-12)
     assert t[0] <= po.t
+
+
+@pytest.mark.parametrize("lam", [None, 0.3, 1.0, 5.0])
+def test_refusals_below_the_branch_are_in_si_units(lam):
+    """A user trial: -5 nm was refused as 'got values from -1.31068' (Maugis' units).  Now the
+    floor and the value are in metres or newtons, and the floor is where the solver's own
+    range ends: just above it is solved, just below refused."""
+    import re
+
+    from asperity.jkr import jkr_normal_force
+    from asperity.maugis_dugdale_load import md_contact_radius, md_normal_force
+
+    kw = {"R": 1e-6, "w": 0.1, "E_star": 1e9}
+    routes = [(jkr_normal_force, "delta (penetration)", "m", -1e-6)] if lam is None else [
+        (lambda x, **k: md_normal_force(x, lam=lam, **k), "delta (penetration)", "m", -1e-6),
+        (lambda x, **k: md_contact_radius(x, lam=lam, **k), "P (load)", "N", -1e-3)]
+    for f, name, unit, far in routes:
+        with pytest.raises(ValueError) as info:
+            f([1e-9, far], **kw)
+        m = re.fullmatch(rf"{re.escape(name)} must be >= (\S+) {unit} \(.*\), got (\S+) {unit}", str(info.value))
+        assert m and float(m.group(2)) == far, str(info.value)
+        floor = float(m.group(1))
+        assert np.isfinite(f(floor * (1 - 1e-4), **kw)).all()
+        with pytest.raises(ValueError, match=f"must be >= {re.escape(m.group(1))} {unit}"):
+            f(floor * (1 + 1e-4), **kw)

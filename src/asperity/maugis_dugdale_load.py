@@ -41,9 +41,9 @@ import numpy as np
 
 from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, ufunc_result
 from ._validation_files import short_repr
-from .maugis_dugdale import check_lambda, md_curve, md_lambda, md_pull_off, md_solve
+from .maugis_dugdale import check_lambda, md_branch_end, md_curve, md_lambda, md_pull_off, md_solve
 from .maugis_dugdale_branch import for_each_lambda
-from .maugis_units import penetration_in_maugis_units
+from .maugis_units import check_floor_in_si, penetration_in_maugis_units
 from .units import to_si
 
 __all__ = ["P_MAX", "md_solve_load", "md_contact_radius", "md_normal_force", "md_pull_off_force",
@@ -256,6 +256,7 @@ def md_contact_radius(P, *, R, w, E_star, sigma0=None, lam=None):
     with np.errstate(all="ignore"):
         P_hat = P / (np.pi * w * R)
     check_finite_result(P_hat, "the load P/(pi w R)", P=P, R=R, w=w)
+    check_floor_in_si(P, P_hat, md_pull_off(lam).P, "P (load)", "N", "minus the Maugis-Dugdale pull-off force")
     A = md_solve_load(P_hat, lam)[0]
     with np.errstate(all="ignore"):
         a = A * np.cbrt(np.pi * w * R * R / K)
@@ -315,6 +316,8 @@ def md_normal_force(delta, *, R, w, E_star, sigma0=None, lam=None):
     delta = as_float_array(to_si(delta, "m", "delta"), "delta", allow_empty=True)
     check_broadcast(delta=delta, R=R, w=w, E_star=E, lam=lam)
     delta_hat, unit = penetration_in_maugis_units(delta, R=R, w=w, E_star=E)
+    check_floor_in_si(delta, delta_hat, md_branch_end(lam).delta, "delta (penetration)", "m",
+                      "the end of the stable Maugis-Dugdale branch")
     with np.errstate(all="ignore"):
         F = md_solve(delta_hat, lam)[1] * unit
     return check_finite_result(F, "the Maugis-Dugdale force", delta=delta, R=R, w=w, E_star=E_star)

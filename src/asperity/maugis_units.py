@@ -24,7 +24,7 @@ import numpy as np
 from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive
 from .units import to_si
 
-__all__ = ["penetration_in_maugis_units"]
+__all__ = ["penetration_in_maugis_units", "check_floor_in_si"]
 
 
 def penetration_in_maugis_units(delta, *, R, w, E_star):
@@ -90,3 +90,36 @@ def penetration_in_maugis_units(delta, *, R, w, E_star):
         D = check_finite_result(delta / scale, "the penetration in Maugis' units", delta=delta, R=R, w=w,
                                 E_star=E_star)
     return D, (float(unit) if unit.ndim == 0 else unit)
+
+
+def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: str) -> None:
+    r"""Refuse values below the end of a branch in the caller's SI units, not in Maugis' units.
+
+    ``value`` (SI, e.g. a penetration in m or a load in N) and ``value_hat`` (the same in
+    Maugis' units) broadcast with ``floor_hat`` (the branch's least value in Maugis' units);
+    the floor in SI is ``floor_hat * value / value_hat`` element by element (a user trial:
+    -5 nm was refused as "got values from -1.31068").
+
+    Raises
+    ------
+    ValueError
+        Naming ``name``, the floor and the smallest offending value, both in ``unit``.
+
+    Examples
+    --------
+    >>> check_floor_in_si(np.array([-2e-9]), np.array([-2.0]), -0.9, "delta (penetration)", "m", "the end")
+    Traceback (most recent call last):
+    ...
+    ValueError: delta (penetration) must be >= -9e-10 m (the end), got -2e-09 m
+    """
+    value, value_hat, floor_hat = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in
+                                                       (value, value_hat, floor_hat)))
+    bad = value_hat < floor_hat
+    if not bad.any():
+        return
+    i = np.flatnonzero(bad.reshape(-1))[0]
+    v, vh, fh = (x.reshape(-1)[i] for x in (value, value_hat, floor_hat))
+    floor, k = fh * v / vh, 6
+    while k < 17 and f"{floor:.{k}g}" == f"{v:.{k}g}":  # digits enough to tell them apart
+        k += 1
+    raise ValueError(f"{name} must be >= {floor:.{k}g} {unit} ({what}), got {v:.{k}g} {unit}")

@@ -366,7 +366,7 @@ def gw_moment_quadrature(dist: HeightDistribution, d, order: float):
     if not np.isfinite(out).all():
         raise ValueError(f"the GW moment of order {n:g} overflows double precision at d = "
                          f"{short_repr(d[~np.isfinite(out)])}: give separations of physical size")
-    return out
+    return ufunc_result(out)
 
 
 def _gw_moment_quadrature(dist, d, order):
