@@ -10,7 +10,9 @@ puts the models beside it -- Greenwood-Williamson (summit parameters from the sp
 moments and from detected summits), the interacting and coalescing Hertzian asperities on the
 scan's own summits (ICHA), Persson's area and the Bush-Gibson-Thomas light-load asymptote --
 prints the table, the largest deviation up to 20 % real area and the costs, and writes
-``validation.csv`` and ``validation.png`` to ``--out``.
+``validation.csv`` and ``validation.png`` to ``--out`` (and, for the synthetic surface, its
+heights in nm as ``scan.npy``, a file to try ``asperity bem`` on: ``asperity bem
+validation/scan.npy --size 4um,4um --unit nm --material Au --load 1mN:100mN:8``).
 """
 
 from __future__ import annotations
@@ -81,6 +83,8 @@ def main(argv=None):
     out.mkdir(parents=True, exist_ok=True)
     result.to_csv(out / "validation.csv")
     result.plot(out / "validation.png")
+    if args.scan is None:  # a file for the command line's examples (docs/validation.md)
+        np.save(out / "scan.npy", surface.heights() * 1e9)
     return result
 
 

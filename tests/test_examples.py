@@ -69,6 +69,11 @@ def test_validate_surface_example(tmp_path, capsys):
                                rtol=1e-12)
     np.testing.assert_allclose(validate_surface(topo, result.columns()["P_N"], material="Au", models="icha")
                                .columns()["area_icha_m2"], result.columns()["area_icha_m2"], rtol=1e-12)
+    # the scan it writes for the command line's examples (a docs check found none written)
+    from asperity.topography import read_topography
+
+    scan = read_topography(tmp_path / "scan.npy", physical_sizes=("4um", "4um"), unit="nm")
+    np.testing.assert_allclose(scan.heights(), topo.heights(), rtol=1e-12, atol=1e-24)
 
 def test_plasticity_example(tmp_path, capsys):
     from asperity import PlasticityWarning

@@ -91,3 +91,14 @@ def test_icha_and_bem_refuse_pressures_out_of_range():
     for func in (icha_contact, lambda t, P, E_star: bem_contact(t, P, E_star=E_star, progress=False)):
         _named(lambda f=func: f(topo, [1e-3], E_star=3.0), "E_star")      # mean pressure 2e7 E*
         _named(lambda f=func: f(topo, [TINY], E_star=1e11), "P")          # 6e-301 E*: never returned
+
+
+@pytest.mark.parametrize("alpha, beta", [(1e-101, 1000.0), (1e100, 1.0), (0.01, 1e101), (0.01, 1e-101),
+                                         (1e-60, 1e-100)])
+def test_alpha_and_beta_outside_the_documented_domain_are_refused(alpha, beta):
+    """docs/numerics.md says alpha and beta lie between 1e-100 and 1e100; a docs check found
+    alpha = 1e-101 answered (mu = 7.7e98) by separation_curve without adhesion."""
+    import asperity
+
+    with pytest.raises(ValueError, match=r"alpha and beta between 1e-100 and 1e100"):
+        asperity.separation_curve([0.0], alpha, beta, 0.0)

@@ -83,9 +83,10 @@ def _check_scales(p: ModelParameters):
     """Reject parameter sets whose scales overflow or leave the Maugis-Dugdale range; return
     (lambda, delta_hat, P_hat, A_hat) with adhesion, None without."""
     log_ab2 = np.log10(p.alpha) + 2.0 * np.log10(p.beta)
-    if not (-250.0 < log_ab2 < 250.0 and -100.0 < np.log10(p.beta) < 100.0 and p.alpha < 1e100):
-        raise ValueError(f"alpha={p.alpha:g}, beta={p.beta:g} put the force scale alpha*beta^2 beyond double "
-                         "precision; use physical values (alpha and beta between 1e-100 and 1e100)")
+    if not (-250.0 < log_ab2 < 250.0 and -100.0 < np.log10(p.beta) < 100.0 and 1e-100 <= p.alpha < 1e100):
+        raise ValueError(f"alpha={p.alpha:g}, beta={p.beta:g} lie outside what double precision handles: alpha "
+                         "and beta between 1e-100 and 1e100, the force scale alpha*beta^2 within 1e-250..1e250; "
+                         "use physical values")
     if not p.adhesive:
         return None
     lam = groups.maugis_lambda(p.alpha, p.beta, p.gamma, p.h_over_b)
