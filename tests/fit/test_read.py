@@ -78,9 +78,11 @@ def test_ignored_columns_and_dropped_rows_are_reported(tmp_path):
     ("P,F\n1,\n", {}, "line 2: empty or NaN cell in column 'F'.*--drop-nan"),
     ("P,F\n1,nan\n", {}, "NaN cell"),
     ("P,F\n1,nan\n", {"drop_nan": True}, "every row holds a NaN"),
-    ("P,F\n1,-2\n", {}, "negative friction: F = -2 at row 1"),
+    ("P,F\n1,-2\n", {}, "data.csv: negative friction: F = -2 at line 2"),
+    ("# x\nP,F\n1,2\n\n3,-2\n", {}, "data.csv: negative friction: F = -2 at line 5"),
+    ("load (nN),mu\n-1,-0.5\n", {}, "a friction coefficient needs a load > 0, got P = -1e-09 at line 2"),
     ("P,mu\n0,0.1\n", {}, "a friction coefficient needs a load > 0"),
-    ("P,F,F_err\n1,2,0\n", {}, r"y_err \(uncertainty\) must be > 0"),
+    ("P,F,F_err\n1,2,0\n", {}, r"data.csv, line 2, column 'F_err': an uncertainty must be > 0, got 0"),
     ("P_off\n-1\n", {}, "pull-off forces must be > 0"),
     ("load,friction [nN]\n1,2\n", {}, "column 'load' has no unit.*--load-unit"),
     ("load [furlong],friction [nN]\n1,2\n", {}, "not a quantity with a unit|compatible"),
@@ -295,3 +297,13 @@ def test_a_condition_the_model_does_not_use_is_noted():
     assert r.values["w_J_m2"] == pytest.approx(0.1, rel=1e-9)
     assert [w for w in r.warnings if "ignored condition" in w] == [
         "pull_off: ignored condition(s) E_Pa: the jkr model has no such parameter"]
+
+
+def test_a_per_row_parameter_given_again_is_named():
+    """A user trial: --R beside a file's R column said "fix: unknown parameter 'R_m'"."""
+    from asperity.fit import fit_pull_off
+
+    data = pull_off_data([1e-7, 2e-7], physical=True, conditions={"R_m": [1e-6, 2e-6]})
+    with pytest.raises(ValueError, match=r"fix: R_m is given row by row by the data \(a column of the file\): "
+                                         "give it in one place only"):
+        fit_pull_off(data, "jkr", material="Au", fix={"R_m": 2e-8})

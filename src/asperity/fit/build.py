@@ -30,8 +30,9 @@ def parameter_names(option, name: str) -> list[str]:
     return list(names)
 
 
-def _expand(option, name: str, params: dict, base_names: dict) -> dict:
-    """User keys (global names, or a base name meaning every copy) -> global names."""
+def _expand(option, name: str, params: dict, base_names: dict, per_row=()) -> dict:
+    """User keys (global names, or a base name meaning every copy) -> global names;
+    ``per_row``: names the data give row by row (pull-off conditions)."""
     if option is None:
         return {}
     if name == "vary":
@@ -45,6 +46,9 @@ def _expand(option, name: str, params: dict, base_names: dict) -> dict:
     for key, value in items:
         key = str(key)
         targets = [key] if key in params else base_names.get(key, [])
+        if not targets and key in per_row:  # a user trial: --R beside a file's R column
+            raise ValueError(f"{name}: {key} is given row by row by the data (a column of the file): give it in "
+                             "one place only")
         if not targets:
             raise ValueError(f"{name}: unknown parameter {key!r}; the parameters are {', '.join(params)}")
         for t in targets:
@@ -95,11 +99,12 @@ def build_problem(datasets, models, *, shared=None, vary=None, fix=None, start=N
     if unknown:
         raise ValueError(f"shared: unknown parameter(s) {', '.join(sorted(unknown))}; the parameters are "
                          f"{', '.join(base_names)}")
-    vary_set = None if vary is None else _expand(vary, "vary", params, base_names)
-    fix = _expand(fix, "fix", params, base_names)
-    start = _expand(start, "start", params, base_names)
-    bounds = _expand(bounds, "bounds", params, base_names)
-    expr = _expand(expr, "expr", params, base_names)
+    rows = {k for t in terms for k in t.data.conditions}
+    vary_set = None if vary is None else _expand(vary, "vary", params, base_names, rows)
+    fix = _expand(fix, "fix", params, base_names, rows)
+    start = _expand(start, "start", params, base_names, rows)
+    bounds = _expand(bounds, "bounds", params, base_names, rows)
+    expr = _expand(expr, "expr", params, base_names, rows)
     both = sorted(set(fix) & set(vary_set or ()))
     if both:
         raise ValueError(f"parameter {both[0]!r} is both fixed and varied; give it in one of fix and vary")

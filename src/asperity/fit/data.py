@@ -125,14 +125,14 @@ class Dataset:
 
     def _check_values(self):
         x, y = self.x, self.y
+        if self.quantity == "mu" and np.any(x <= 0):  # first: mu = F/P < 0 there says nothing of the sign
+            i = int(np.flatnonzero(x <= 0)[0])
+            raise ValueError(f"a friction coefficient needs a load > 0, got P = {x[i]:g} at row {i + 1} (give the "
+                             "friction force F instead)")
         if self.quantity in ("F", "mu") and np.any(y < 0):
             i = int(np.flatnonzero(y < 0)[0])
             raise ValueError(f"negative friction: {self.quantity} = {y[i]:g} at row {i + 1} (friction is >= 0; "
                              "flip the sign of the lateral signal, or drop the row)")
-        if self.quantity == "mu" and np.any(x <= 0):
-            i = int(np.flatnonzero(x <= 0)[0])
-            raise ValueError(f"a friction coefficient needs a load > 0, got P = {x[i]:g} at row {i + 1} (give the "
-                             "friction force F instead)")
         if self.quantity == "pull_off" and np.any(y <= 0):
             i = int(np.flatnonzero(y <= 0)[0])
             raise ValueError(f"pull-off forces must be > 0 (magnitudes), got {y[i]:g} at row {i + 1}")

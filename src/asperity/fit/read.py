@@ -116,7 +116,7 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
     values = {key: [] for key in (*used, *conditions)}
     index = {**{k: columns[k][0] for k in used}, **{k: v[0] for k, v in conditions.items()}}
     factor = {**{k: columns[k][1] for k in used}, **{k: v[1] for k, v in conditions.items()}}
-    dropped, commas = 0, []
+    dropped, commas, kept = 0, [], []
     for r, row in enumerate(data_rows):
         line_no = lines[r + 1][0]
         if len(row) != len(headers):
@@ -130,6 +130,7 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
                                  "drop_nan=True, --drop-nan on the command line)")
             dropped += 1
             continue
+        kept.append(line_no)
         for k, v in cells.items():
             values[k].append(to_si_exact(v, factor[k], texts[k]))
     if not values[used[0]]:
@@ -146,7 +147,16 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
     if commas:
         notes.append(f"{name}: read decimal commas as decimal points in the ';'-separated file ({commas[0]!r} is "
                      f"{commas[0].replace(',', '.')})")
-    return _dataset(kind, values, used, conditions, physical, name, dropped, notes)
+    for k in (k for k in used if k.endswith("_err")):
+        bad = [i for i, v in enumerate(values[k]) if not v > 0]
+        if bad:
+            raise ValueError(f"{name}, line {kept[bad[0]]}, column {headers[index[k]]!r}: an uncertainty must be "
+                             f"> 0, got {values[k][bad[0]]:g}")
+    try:
+        return _dataset(kind, values, used, conditions, physical, name, dropped, notes)
+    except ValueError as err:  # the data's checks count rows: say the file and its line (a user trial)
+        text = re.sub(r"\b(at|in) row (\d+)", lambda m: f"{m.group(1)} line {kept[int(m.group(2)) - 1]}", str(err))
+        raise ValueError(f"{name}: {text}") from None
 
 
 #: Excel's error values: data cells (NaN, dropped with drop_nan), not comments.
