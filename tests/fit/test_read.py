@@ -307,3 +307,27 @@ def test_a_per_row_parameter_given_again_is_named():
     with pytest.raises(ValueError, match=r"fix: R_m is given row by row by the data \(a column of the file\): "
                                          "give it in one place only"):
         fit_pull_off(data, "jkr", material="Au", fix={"R_m": 2e-8})
+
+
+def test_the_delimiter_is_the_one_that_cuts_header_and_data_alike(tmp_path):
+    """A user trial: a TSV whose header holds a comma was cut at the comma."""
+    d = read_data(write(tmp_path, "Load (nN)\tFriction (nN)\tNote, free text\n1\t2\ta, b\n3\t4\tc\n"))
+    assert d.x.tolist() == [1e-9, 3e-9] and d.y.tolist() == [2e-9, 4e-9]
+    d = read_data(write(tmp_path, "P;F;comment, if any\n1;2;x\n"))
+    assert d.x.tolist() == [1.0]
+
+
+@pytest.mark.parametrize("name", ["COF", "µ", "μ", "coefficient of friction"])
+def test_friction_coefficient_spellings(tmp_path, name):
+    d = read_data(write(tmp_path, f"Load (nN),{name}\n1,0.2\n2,0.3\n"))
+    assert d.quantity == "mu" and d.y.tolist() == [0.2, 0.3]
+
+
+def test_a_column_of_another_kind_is_ignored_once_the_kind_is_given(tmp_path):
+    """A user trial: a tribometer's sliding distance beside friction data was refused with --kind friction."""
+    path = write(tmp_path, "Load (nN),Friction (nN),Distance (nm)\n1,2,5\n3,4,6\n")
+    d = read_data(path, kind="friction")
+    assert d.y.tolist() == [2e-9, 4e-9]
+    assert any("ignored column(s) 'Distance (nm)' (not used by friction data)" in n for n in d.notes)
+    with pytest.raises(ValueError, match="ambiguous data: columns of force and friction data; give the kind"):
+        read_data(path)

@@ -24,7 +24,7 @@ __all__ = ["ROLES", "SI_UNITS", "UNIT_FLAGS", "classify_header", "condition_name
 ROLES = {
     "load": ("p", "load", "normal_force", "normal_load", "force"),
     "friction": ("f", "friction", "friction_force", "lateral_force"),
-    "mu": ("mu", "friction_coefficient"),
+    "mu": ("mu", "friction_coefficient", "coefficient_of_friction", "cof", "\u00b5", "\u03bc"),
     "separation": ("d", "separation", "distance", "gap"),
     "pull_off": ("p_off", "pull_off", "pull_off_force", "adhesion_force"),
 }

@@ -89,7 +89,7 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
         raise ValueError(f"{name}: no header line (the file is empty or holds only comments)")
     header_line, header = lines[0]
     skipped = [i + 1 for i, line in enumerate(every) if i + 1 > header_line and _is_comment(line)]
-    delimiter = next((d for d in (",", "\t", ";") if d in header), ",")
+    delimiter = _delimiter(header, lines[1][1] if len(lines) > 1 else "")
     rows = _drop_padding(list(csv.reader([line for _, line in lines], delimiter=delimiter)))
     headers = [h.strip() for h in rows[0]]
     if len(headers) == 1 and len(rows) > 1 and rows[1] and len(rows[1][0].split()) > 1:  # space-separated
@@ -107,7 +107,7 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
     columns, conditions, ignored = _columns(headers, units, name)
     try:
         kind = _kind(columns, kind, name)
-        used = _used(columns, kind, name)
+        used, unused = _used(columns, kind, name)
     except ValueError as err:  # say which columns were not recognised ('load (nn)': a typo)
         if ignored and "missing column" in str(err):
             raise ValueError(f"{err} (not recognised: {_shown(ignored)})") from None
@@ -138,6 +138,8 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
     notes = []
     if ignored:
         notes.append(f"{name}: ignored column(s) {_shown(ignored)}")
+    if unused:  # the kind given: a sliding distance beside friction data (a user trial: refused before)
+        notes.append(f"{name}: ignored column(s) {_shown(unused)} (not used by {kind} data)")
     if dropped:
         notes.append(f"{name}: dropped {dropped} row(s) holding NaN")
     if skipped:  # a user trial: a row '#N/A,...' or '#2 (retest),...' vanished without a word
@@ -163,6 +165,17 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
 _EXCEL_ERRORS = ("#n/a", "#value!", "#div/0!", "#ref!", "#name?", "#num!", "#null!", "#spill!", "#calc!",
                  "#getting_data")
 _DECIMAL_COMMA = re.compile(r"\s*[+-]?\d+,\d+(?:[eE][+-]?\d+)?\s*")
+
+
+def _delimiter(header: str, first: str) -> str:
+    """The delimiter that cuts the header and the first data line into as many cells (more than
+    one), tab and semicolon first (a user trial: 'Load (nN)<TAB>Friction, lateral (nN)' was cut at
+    its comma); else the first of comma, tab, semicolon in the header."""
+    for d in ("\t", ";", ","):
+        n = len(next(csv.reader([header], delimiter=d)))
+        if n > 1 and first and n == len(next(csv.reader([first], delimiter=d))):
+            return d
+    return next((d for d in (",", "\t", ";") if d in header), ",")
 
 
 def _is_comment(line: str) -> bool:
@@ -321,10 +334,7 @@ def _used(columns, kind, name):
                     "separation": "a separation", "friction": "a friction"}[role]
             raise ValueError(f"{name}: missing column: {kind} data need {what}")
     used = [k for k in (y, x, f"{y}_err", f"{x}_err") if k in columns]
-    for key in columns:
-        if key not in used and not key.endswith("_err"):
-            raise ValueError(f"{name}: column {columns[key][3]!r} does not belong in {kind} data")
-    return used
+    return used, [columns[k][3] for k in columns if k not in used]
 
 
 def _physical(columns, used, name):
