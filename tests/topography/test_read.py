@@ -439,3 +439,33 @@ def test_a_line_scan_written_as_one_line_says_how_to_write_it(tmp_path):
     with pytest.raises(ValueError, match=r"grid \(64, 1\); need at least 8 along every axis; a line scan is one "
                                          r"column of heights, not one line$"):
         read_topography(tmp_path / "row.txt", physical_sizes="5um", unit="nm")
+
+
+@pytest.mark.parametrize("delimiter", [",", ";", ", "])
+def test_a_comma_or_semicolon_separated_matrix_reads_as_the_blank_separated_one(tmp_path, delimiter):
+    """A user trial: np.savetxt(..., delimiter=',') (a spreadsheet's export) was refused."""
+    h = np.random.default_rng(7).standard_normal((12, 14))
+    np.savetxt(tmp_path / "plain.txt", h)
+    np.savetxt(tmp_path / "m.csv", h, delimiter=delimiter, header="exported", comments="# ")
+    kw = {"physical_sizes": ("4um", "3um"), "unit": "nm"}
+    plain, delimited = (read_topography(tmp_path / f, **kw) for f in ("plain.txt", "m.csv"))
+    assert delimited.nb_grid_pts == plain.nb_grid_pts == (14, 12)
+    np.testing.assert_array_equal(delimited.heights(), plain.heights())
+
+
+def test_decimal_commas_between_blanks_are_not_taken_for_delimiters(tmp_path):
+    """'1,5<TAB>2,3' must not become four numbers: such a file stays refused."""
+    h = np.random.default_rng(8).standard_normal((10, 9))
+    (tmp_path / "m.txt").write_text("\n".join("\t".join(f"{v:.4f}".replace(".", ",") for v in r) for r in h))
+    with pytest.raises(ValueError, match=r"m\.txt: not a readable topography file \(no SurfaceTopography reader"):
+        read_topography(tmp_path / "m.txt", physical_sizes=("4um", "3um"), unit="nm")
+
+
+def test_a_comma_separated_profile_is_the_blank_separated_one(tmp_path):
+    x = np.arange(64) * 20.0
+    z = np.sin(x / 50.0)
+    np.savetxt(tmp_path / "p.txt", np.c_[x, z])
+    np.savetxt(tmp_path / "p.csv", np.c_[x, z], delimiter=",")
+    plain, delimited = (read_topography(tmp_path / f, unit="nm") for f in ("p.txt", "p.csv"))
+    assert delimited.dim == plain.dim == 1
+    np.testing.assert_array_equal(delimited.heights(), plain.heights())

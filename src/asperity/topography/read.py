@@ -29,9 +29,7 @@ as a NASA SRTM ``.hgt`` elevation tile (which has no header) unless it is named 
 
 from __future__ import annotations
 
-import codecs
 import contextlib
-import io
 import logging
 import os
 import warnings
@@ -42,6 +40,7 @@ from .._optional import require
 from .._validation import as_float_array
 from .._warnings import AsperityWarning
 from ..units import to_si
+from ._textfile import open_bytes
 from .summits import MIN_POINTS
 
 __all__ = ["read_topography", "HEIGHT_UNITS"]
@@ -259,7 +258,7 @@ def _quiet_readers():
 def _read(st, name, fmt, physical_sizes, unit, channel_index):
     """Open ``name`` with SurfaceTopography; every failure becomes a ValueError naming the file."""
     try:
-        with _quiet_readers(), _open_bytes(name) as fobj, st.open_topography(fobj, format=fmt) as reader:
+        with _quiet_readers(), open_bytes(name) as fobj, st.open_topography(fobj, format=fmt) as reader:
             if type(reader).__name__ == "HGTReader" and not name.lower().endswith(".hgt"):
                 raise ValueError(f"{name}: not a readable topography file (only its size matches a headerless "
                                  f"NASA SRTM .hgt tile; name it *.hgt if it is one)")
@@ -279,27 +278,6 @@ def _read(st, name, fmt, physical_sizes, unit, channel_index):
         raise ValueError(f"{name}: not a readable topography file ({_reason(err)})") from None
 
 
-_BOMS = ((codecs.BOM_UTF8, "utf-8-sig"), (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
-
-
-def _open_bytes(name):
-    """The file; a text file with a byte-order mark as UTF-8 without it (a user trial: a UTF-8
-    mark cost the first scan line, unnoted; UTF-16, a Windows export, was refused)."""
-    fobj = open(name, "rb")
-    head = fobj.read(3)
-    encoding = next((enc for bom, enc in _BOMS if head.startswith(bom)), None)
-    if encoding is None:
-        fobj.seek(0)
-        return fobj
-    with fobj:
-        raw = head + fobj.read()
-    try:
-        return io.BytesIO(raw.decode(encoding).encode("utf-8"))
-    except UnicodeDecodeError:
-        raise ValueError(f"{name}: not a readable topography file (it starts with a {encoding} byte-order "
-                         "mark but is not such text)") from None
-
-
 def _channel(name, reader, channel_index):
     """The requested data channel of an open reader."""
     if channel_index is None:
@@ -316,8 +294,8 @@ def _channel(name, reader, channel_index):
 def _reason(err) -> str:
     """One line describing a SurfaceTopography read error."""
     if type(err).__name__ == "CannotDetectFileFormat":
-        return ("no SurfaceTopography reader recognises the format (a matrix of numbers is read as "
-                "whitespace-separated text or .npy; a comma-separated one is not)")
+        return ("no SurfaceTopography reader recognises the format (a matrix of numbers is read as text "
+                "separated by blanks, commas or semicolons, one line per scan line, or .npy)")
     lines = [line.strip() for line in str(err).splitlines() if line.strip()]
     return f"{type(err).__name__}: {lines[0]}" if lines else type(err).__name__
 

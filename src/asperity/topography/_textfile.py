@@ -1,0 +1,72 @@
+"""Text height matrices as SurfaceTopography's text reader takes them.
+
+Its reader takes whitespace-separated UTF-8 without a byte-order mark.  Two spellings that
+spreadsheets and Windows write are brought to that form before it reads them, each only
+when it is unambiguous (user trials):
+
+* a byte-order mark: UTF-8 (the first scan line was dropped with it, unnoted) or UTF-16
+  (refused), decoded;
+* a matrix of numbers separated by commas or semicolons (``np.savetxt(..., delimiter=",")``,
+  refused before): every data line cut by the delimiter into as many cells, each a plain
+  number, and no blank inside a cell (a decimal comma between blanks, ``1,5 2,3``, is left
+  alone and refused), the delimiters made blanks; ``#`` lines are kept.
+"""
+
+from __future__ import annotations
+
+import codecs
+import io
+import re
+
+_BOMS = ((codecs.BOM_UTF8, "utf-8-sig"), (codecs.BOM_UTF16_LE, "utf-16"), (codecs.BOM_UTF16_BE, "utf-16"))
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:nan|NaN|NAN|inf|Inf)")
+#: Files read whole to look for a delimited matrix (larger ones go to SurfaceTopography as they are).
+MAX_TEXT = 256 * 2**20
+
+
+def open_bytes(name):
+    """The file as a binary file object; a text matrix with a byte-order mark or delimiters as
+    whitespace-separated UTF-8 (see the module docstring)."""
+    fobj = open(name, "rb")
+    head = fobj.read(4096)
+    encoding = next((enc for bom, enc in _BOMS if head.startswith(bom)), None)
+    if encoding is None and not _maybe_delimited(head):
+        fobj.seek(0)
+        return fobj
+    with fobj:
+        raw = head + fobj.read(MAX_TEXT)
+    if encoding is None and len(raw) > MAX_TEXT:
+        return open(name, "rb")
+    try:
+        text = raw.decode(encoding or "utf-8")
+    except UnicodeDecodeError:
+        if encoding is None:  # not text after all: as it is
+            return open(name, "rb")
+        raise ValueError(f"{name}: not a readable topography file (it starts with a {encoding} byte-order "
+                         "mark but is not such text)") from None
+    return io.BytesIO((_whitespace_matrix(text) or text).encode("utf-8"))
+
+
+def _maybe_delimited(head: bytes) -> bool:
+    """A text start whose first line that is not a comment holds a comma or semicolon."""
+    if b"\x00" in head:
+        return False
+    for line in head.decode("utf-8", errors="replace").splitlines():
+        if line.strip() and not line.lstrip().startswith("#"):
+            return "," in line or ";" in line
+    return False
+
+
+def _whitespace_matrix(text: str) -> str | None:
+    """``text`` with its delimiter made blanks if it is a delimited matrix of numbers, else None."""
+    lines = text.splitlines()
+    data = [line for line in lines if line.strip() and not line.lstrip().startswith("#")]
+    for d in (",", ";"):
+        cells = [line.strip().split(d) for line in data]
+        if not data or len(cells[0]) < 2 or any(len(c) != len(cells[0]) for c in cells):
+            continue
+        if all(_NUMBER.fullmatch(cell.strip()) and " " not in cell.strip() and "\t" not in cell.strip()
+               for row in cells for cell in row):
+            return "\n".join(line if not line.strip() or line.lstrip().startswith("#")
+                             else line.replace(d, " ") for line in lines) + "\n"
+    return None
