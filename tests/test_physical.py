@@ -385,3 +385,19 @@ def test_groups_out_of_range_name_the_surface_values_they_come_from():
     """A review: Surface(sigma_s=1e-320) was refused as 'beta must be > 0', a name the user never gave."""
     with pytest.raises(ValueError, match=r"beta must be > 0 .*; from sigma_s = 9\.99989e-321 m, R = 1e-06 m, b = "):
         PhysicalContact("Au", Surface(sigma_s=1e-320, R=1e-6, eta=1e12, area=1e-6)).load_curve([1e-3])
+
+
+def test_a_pull_off_search_ending_short_of_it_says_so():
+    """A user trial: pull_off(d_max=20e-9), metres meant, searched up to 2e-8 sigma_s and said
+    'no pull-off' without a word; '20nm' found it."""
+    from asperity import AsperityWarning
+    from asperity.physical import PhysicalContact, Surface
+
+    c = PhysicalContact("Au", Surface(sigma_s=5e-9, R=1e-6, eta=1e13, area=1e-8))
+    with pytest.warns(AsperityWarning, match=r"no tensile force for d <= d_max = 2e-08 sigma_s: a pull-off, if "
+                                             r"any, lies beyond; a plain number is in units of sigma_s, a length "
+                                             r"needs its unit \('20nm'\)"):
+        assert not c.pull_off(20e-9).exists
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert c.pull_off("20nm").force == pytest.approx(c.pull_off().force, rel=1e-12)
