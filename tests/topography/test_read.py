@@ -457,7 +457,8 @@ def test_decimal_commas_between_blanks_are_not_taken_for_delimiters(tmp_path):
     """'1,5<TAB>2,3' must not become four numbers: such a file stays refused."""
     h = np.random.default_rng(8).standard_normal((10, 9))
     (tmp_path / "m.txt").write_text("\n".join("\t".join(f"{v:.4f}".replace(".", ",") for v in r) for r in h))
-    with pytest.raises(ValueError, match=r"m\.txt: not a readable topography file \(no SurfaceTopography reader"):
+    with pytest.raises(ValueError, match=r"m\.txt: not a readable topography file \(no SurfaceTopography .*decimal "
+                                         r"commas \(.1,5.\) are not read: write decimal points\)$"):
         read_topography(tmp_path / "m.txt", physical_sizes=("4um", "3um"), unit="nm")
 
 
@@ -469,3 +470,13 @@ def test_a_comma_separated_profile_is_the_blank_separated_one(tmp_path):
     plain, delimited = (read_topography(tmp_path / f, unit="nm") for f in ("p.txt", "p.csv"))
     assert delimited.dim == plain.dim == 1
     np.testing.assert_array_equal(delimited.heights(), plain.heights())
+
+
+def test_a_ragged_text_matrix_names_its_odd_line(tmp_path):
+    """A user trial: one short line was reported as an unknown format, blaming commas."""
+    h = np.random.default_rng(9).standard_normal((12, 10))
+    lines = [" ".join(f"{v:.5f}" for v in row) for row in h]
+    lines[6] = " ".join(lines[6].split()[:-1])
+    (tmp_path / "m.txt").write_text("\n".join(lines) + "\n")
+    with pytest.raises(ValueError, match=r"; line 7 holds 9 numbers, the others 10\)$"):
+        read_topography(tmp_path / "m.txt", physical_sizes=("4um", "3um"), unit="nm")

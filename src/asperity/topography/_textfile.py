@@ -70,3 +70,29 @@ def _whitespace_matrix(text: str) -> str | None:
             return "\n".join(line if not line.strip() or line.lstrip().startswith("#")
                              else line.replace(d, " ") for line in lines) + "\n"
     return None
+
+
+def ragged_note(name) -> str:
+    """'; line K holds n numbers, the others m' for a text matrix with one line of another
+    length (a user trial: a short line was reported as an unknown format), a word on decimal
+    commas between blanks, else ''."""
+    try:
+        with open(name, "rb") as fobj:
+            raw = fobj.read(MAX_TEXT + 1)
+        text = raw.decode("utf-8-sig") if len(raw) <= MAX_TEXT else ""
+    except (OSError, UnicodeDecodeError):
+        return ""
+    counts = [(i + 1, len(line.replace(",", " ").replace(";", " ").split())) for i, line in
+              enumerate(text.splitlines()) if line.strip() and not line.lstrip().startswith("#")]
+    if len(counts) < 3:
+        return ""
+    values = [n for _, n in counts]
+    common = max(set(values), key=values.count)
+    odd = [(i, n) for i, n in counts if n != common]
+    if not odd and re.search(r"\d,\d+\s", text):
+        return "; decimal commas ('1,5') are not read: write decimal points"
+    if not odd or len(odd) > len(counts) // 2:
+        return ""
+    return (f"; line {odd[0][0]} holds {odd[0][1]} numbers, the others {common}" if len(odd) == 1 else
+            f"; {len(odd)} lines (the first, line {odd[0][0]}) hold other numbers of values than the {common} "
+            "of the rest")

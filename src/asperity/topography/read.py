@@ -40,7 +40,7 @@ from .._optional import require
 from .._validation import as_float_array
 from .._warnings import AsperityWarning
 from ..units import to_si
-from ._textfile import open_bytes
+from ._textfile import open_bytes, ragged_note
 from .summits import MIN_POINTS
 
 __all__ = ["read_topography", "HEIGHT_UNITS"]
@@ -275,7 +275,7 @@ def _read(st, name, fmt, physical_sizes, unit, channel_index):
             raise
         raise ValueError(f"{name}: cannot read topography ({_reason(err)})") from None
     except Exception as err:  # SurfaceTopography raises many exception types
-        raise ValueError(f"{name}: not a readable topography file ({_reason(err)})") from None
+        raise ValueError(f"{name}: not a readable topography file ({_reason(err)}{ragged_note(name)})") from None
 
 
 def _channel(name, reader, channel_index):
