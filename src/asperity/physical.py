@@ -293,10 +293,10 @@ class PhysicalContact(ContactGroups, ContactDescription, ContactPlasticity):
             raise ValueError(f"{err} (d_max = {given} is {d_max:.6g} sigma_s, sigma_s = {self.surface.sigma_s:g} m)") \
                 from None
         if not po.exists and given is not None and self.model.params.adhesive:  # a user trial: d_max=20e-9
-            warnings.warn(AsperityWarning(  # (metres meant) searched 2e-8 sigma_s and said 'no pull-off'
-                f"no tensile force for d <= d_max = {d_max:.4g} sigma_s{f' ({given})' if isinstance(given, str) else ''}"
-                ": a pull-off, if any, lies "
-                "beyond; a plain number is in units of sigma_s, a length needs its unit ('20nm')"), stacklevel=2)
+            shown = f" ({given})" if isinstance(given, str) else ""  # (metres meant) searched 2e-8 sigma_s
+            warnings.warn(AsperityWarning(  # and said 'no pull-off'
+                f"no tensile force for d <= d_max = {d_max:.4g} sigma_s{shown}: a pull-off, if any, lies beyond; a "
+                "plain number is in units of sigma_s, a length needs its unit ('20nm')"), stacklevel=2)
         area = 0.0
         if po.exists:
             at = self.model.separation_curve([po.d])
