@@ -285,3 +285,23 @@ def test_a_prefixed_unit_reads_as_the_number_with_its_exponent(number, prefixed)
     1e9), '3.3e-9m' 3.3e-09; a quarter of the spellings sampled were one ulp off."""
     unit_text, k, unit = prefixed
     assert parse_quantity(f"{number}{unit_text}", unit, "x") == float(f"{number}e{k}")
+
+
+@pytest.mark.parametrize("value, text", [(999.95, "1 kPa"), (999960.0, "1 MPa"), (-999.95, "-1 kPa"),
+                                         (999.94, "999.9 Pa"), (1e-20, "1e-20 Pa"), (1e15, "1e+15 Pa"),
+                                         (1e-15, "1 fPa"), (7.8e10, "78 GPa"), (0.0, "0 Pa")])
+def test_format_si_at_the_prefix_edges(value, text):
+    """A user trial: 999.95 Pa printed as '1000 Pa', 1e-20 Pa as '1e-05 fPa'."""
+    from asperity.units import format_si
+
+    assert format_si(value, "Pa") == text
+
+
+@given(st.floats(1e-15, 9.9e14) | st.floats(-9.9e14, -1e-15))
+def test_format_si_reads_back_to_four_digits_with_a_mantissa_below_1000(value):
+    from asperity.units import _PREFIXES, format_si
+
+    number, unit = format_si(value, "Pa").split(" ")
+    scale = {f"{p}Pa": 10.0**e for e, p in _PREFIXES.items()}[unit]
+    assert 1 <= abs(float(number)) < 1000
+    assert float(number) * scale == pytest.approx(value, rel=5e-4)

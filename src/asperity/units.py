@@ -326,7 +326,8 @@ def format_si(value, unit: str) -> str:
     Returns
     -------
     str
-        E.g. ``'78 GPa'``; zero, NaN and infinity without a prefix.
+        E.g. ``'78 GPa'``; zero, NaN, infinity and values beyond the prefixes f..T (below
+        1e-15, from 1000 T) without a prefix, in exponent notation.
 
     Raises
     ------
@@ -349,7 +350,9 @@ def format_si(value, unit: str) -> str:
     if not isinstance(unit, str):
         raise TypeError(f"unit must be a string, got {type(unit).__name__} {unit!r}")
     value = float(value)
-    if value == 0 or not math.isfinite(value):
-        return f"{value:g} {unit}"
+    if value == 0 or not math.isfinite(value) or not 1e-15 <= abs(value) < 999.95e12:  # beyond f..T: 1e-20 Pa
+        return f"{value:.4g} {unit}"
     exponent = min(max(3 * math.floor(math.log10(abs(value)) / 3), -15), 12)
+    if exponent < 12 and abs(float(f"{value / 10.0**exponent:.4g}")) >= 1000:  # 999.95 rounds to 1000: '1 k'
+        exponent += 3
     return f"{value / 10.0**exponent:.4g} {_PREFIXES[exponent]}{unit}"
