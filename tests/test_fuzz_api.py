@@ -188,7 +188,7 @@ def _valid_table(tmp: str) -> dict[str, callable]:
         "asperity.maugis_dugdale.md_load": lambda: {"t": a, "lam": 1.0},
         "asperity.maugis_dugdale.md_penetration": lambda: {"t": a, "lam": 1.0},
         "asperity.maugis_dugdale.md_curve": lambda: {"t": a, "lam": 1.0, "derivatives": False},
-        "asperity.maugis_dugdale.md_t_of_radius": lambda: {"A": a, "lam": 1.0},
+        "asperity.maugis_dugdale.md_t_of_radius": lambda: {"A": [1.0, 2.0], "lam": 1.0},  # a list: scalar-checked
         "asperity.maugis_dugdale.md_lambda": lambda: {"R": 1e-6, "w": 1.0, "E_star": 1e11, "sigma0": 1e9},
         "asperity.maugis_dugdale_branch.check_lambda": lambda: {"lam": 1.0},
         "asperity.maugis_dugdale_branch.md_branch_end": lambda: {"lam": 1.0},

@@ -49,7 +49,7 @@ from ._maugis_dugdale_brackets import (
     md_radius_from_brackets,
     md_t_of_radius_unchecked,
 )
-from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive
+from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive, ufunc_result
 from .maugis_dugdale_branch import (
     A_MAX,
     DELTA_MAX,
@@ -328,7 +328,7 @@ def md_t_of_radius(A, lam):
         raise ValueError(f"A (contact radius) must lie in [{A_min.ravel()[i]:.6g}, {A_MAX:g}] for "
                          f"lam = {lam.ravel()[i]:g} (t = sqrt(m^2 - 1) within [{T_RANGE[0]:g}, {T_RANGE[1]:g}]), "
                          f"got {A.ravel()[i]!r}")
-    return md_t_of_radius_unchecked(A, lam)
+    return ufunc_result(md_t_of_radius_unchecked(A, lam))
 
 
 def md_lambda(R, w, E_star, sigma0):
