@@ -24,6 +24,7 @@ u = pint.UnitRegistry()
     (np.ma.masked_array([1.0, 2.0], [False, True]), "masked"),
     pytest.param(10**400, "finite", id="int-1e400"), pytest.param([1.0, -10**400], "finite", id="list-int-1e400"),
     pytest.param(np.longdouble("1e400"), "finite", id="longdouble-1e400"),  # a user trial
+    pytest.param(np.array([True, 1.0], dtype=object), "boolean", id="object-array-bool"),  # a user trial
 ])
 def test_as_float_array_rejects(value, message):
     import warnings

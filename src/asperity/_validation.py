@@ -98,7 +98,10 @@ def as_float_array(value, name: str, *, allow_empty: bool = False) -> np.ndarray
 
 
 def _holds_bool(value) -> bool:
-    """True if a (nested) list or tuple holds a boolean, which NumPy would silently make 0 or 1."""
+    """True if a (nested) list or tuple, or an object array, holds a boolean, which NumPy would
+    silently make 0 or 1."""
+    if isinstance(value, np.ndarray) and value.dtype == object:  # a user trial: [True, 1.0] as objects
+        return any(isinstance(v, bool | np.bool_) for v in value.flat)
     if not isinstance(value, list | tuple):
         return False
     types = set(map(type, value))
