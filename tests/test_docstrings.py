@@ -12,7 +12,8 @@ import pytest
 import asperity
 
 #: Modules whose examples must run.
-DOCTEST_MODULES = ["asperity.curves", "asperity.multi_asperity", "asperity.tabulation", "asperity.load_control",
+DOCTEST_MODULES = ["asperity.curves", "asperity.groups", "asperity.multi_asperity", "asperity.tabulation",
+                   "asperity.load_control",
                    "asperity.branch_inversion",
                    "asperity.pull_off_search", "asperity.asperity_law", "asperity.maugis_dugdale",
                    "asperity._maugis_dugdale_brackets", "asperity.maugis_dugdale_branch",

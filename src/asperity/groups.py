@@ -184,8 +184,38 @@ def work_of_adhesion_from_gamma(gamma, E_star, b):
 
 
 def composite_modulus(E, nu):
-    r""":math:`E^* = E/(1-\nu^2)` of an elastic body against a rigid flat."""
-    E, nu = check_positive(E, "E"), check_poisson(nu)
+    r"""Composite modulus :math:`E^* = E/(1-\nu^2)` of an elastic body against a rigid flat.
+
+    .. math:: E^* = \frac{E}{1-\nu^2}
+
+    Parameters
+    ----------
+    E : array_like
+        Young's modulus (Pa), > 0: a number, a pint quantity or a string with a unit
+        (``'70GPa'``).
+    nu : array_like
+        Poisson's ratio, -1 < nu < 0.5.
+
+    Returns
+    -------
+    float or ndarray
+        :math:`E^*` (Pa), the broadcast shape of the inputs.
+
+    Raises
+    ------
+    ValueError
+        If an input is out of its range, not real and finite, or the shapes do not broadcast.
+
+    Examples
+    --------
+    >>> round(float(composite_modulus("70GPa", 0.3)) / 1e9, 3)
+    76.923
+
+    References
+    ----------
+    K. L. Johnson, *Contact Mechanics* (1985), Eq (4.22) with a rigid counterface.
+    """
+    E, nu = check_positive(to_si(E, "Pa", "E"), "E"), check_poisson(nu)
     check_broadcast(E=E, nu=nu)
     with np.errstate(all="ignore"):
         return check_finite_result(E / (1.0 - nu**2), "E*", E=E, nu=nu)
