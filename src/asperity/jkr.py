@@ -31,7 +31,7 @@ from ._validation import (
     check_positive_scaled,
     ufunc_result,
 )
-from .jkr_branch import jkr_load, jkr_penetration, jkr_pull_off, jkr_solve, jkr_solve_load
+from .jkr_branch import DELTA_END, jkr_load, jkr_penetration, jkr_pull_off, jkr_solve, jkr_solve_load
 from .maugis_units import check_floor_in_si, penetration_in_maugis_units
 from .units import to_si
 
@@ -164,8 +164,7 @@ def jkr_normal_force(delta, *, R, w, E_star):
     E = as_float_array(to_si(E_star, "Pa", "E_star"), "E_star")
     delta_a, R_a, w_a, E_a = (np.broadcast_to(x, shape)[adhesive] for x in (delta, R, w, E))
     delta_hat, unit = penetration_in_maugis_units(delta_a, R=R_a, w=w_a, E_star=E_a)
-    check_floor_in_si(delta_a, delta_hat, jkr_penetration(6.0 ** (-1.0 / 3.0)), "delta (penetration)", "m",
-                      "the end of the stable JKR branch")
+    check_floor_in_si(delta_a, delta_hat, DELTA_END, "delta (penetration)", "m", "the end of the stable JKR branch")
     with np.errstate(all="ignore"):
         F[adhesive] = jkr_solve(delta_hat)[1] * unit
     return ufunc_result(check_finite_result(F, "the JKR force", delta=delta, R=R, w=w, E_star=E_star))

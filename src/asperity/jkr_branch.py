@@ -147,6 +147,8 @@ def jkr_pull_off(control: str = "load"):
 #: Radius and penetration at the end of the displacement-stable branch, A = 6^(-1/3).
 _A_C = 6.0 ** (-1.0 / 3.0)
 _DELTA_C = _A_C**2 - np.sqrt(8.0 * _A_C / 3.0)
+#: The end of the stable JKR branch in Maugis' units, :math:`A_c^2 - \sqrt{8A_c/3}`, :math:`A_c = 6^{-1/3}`.
+DELTA_END = float(_DELTA_C)
 
 
 def jkr_solve_load(P):

@@ -92,13 +92,14 @@ def penetration_in_maugis_units(delta, *, R, w, E_star):
     return D, (float(unit) if unit.ndim == 0 else unit)
 
 
-def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: str) -> None:
+def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: str, rtol: float = 0.0) -> None:
     r"""Refuse values below the end of a branch in the caller's SI units, not in Maugis' units.
 
     ``value`` (SI, e.g. a penetration in m or a load in N) and ``value_hat`` (the same in
     Maugis' units) broadcast with ``floor_hat`` (the branch's least value in Maugis' units);
     the floor in SI is ``floor_hat * value / value_hat`` element by element (a user trial:
-    -5 nm was refused as "got values from -1.31068").
+    -5 nm was refused as "got values from -1.31068").  ``rtol``: the solver's own slack below
+    the floor (rounding of a round trip through SI), so that this check is never stricter.
 
     Raises
     ------
@@ -114,7 +115,7 @@ def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: s
     """
     value, value_hat, floor_hat = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in
                                                        (value, value_hat, floor_hat)))
-    bad = value_hat < floor_hat
+    bad = value_hat < floor_hat - rtol * np.abs(floor_hat)
     if not bad.any():
         return
     i = np.flatnonzero(bad.reshape(-1))[0]

@@ -222,7 +222,7 @@ class HeightDistribution(abc.ABC):
         """
         d = as_float_array(d, "d", allow_empty=True)
         n = check_order(order)
-        return self._checked_moment(lambda x: _gw_moment_quadrature(self, x, n), d, n)
+        return self._checked_moment(lambda x: gw_moment_quadrature_unchecked(self, x, n), d, n)
 
     def _checked_moment(self, raw, d, n):
         """``raw(d)`` (a family's form of F_n) without warnings; entries where an intermediate
@@ -235,7 +235,7 @@ class HeightDistribution(abc.ABC):
                 out = np.full(d.shape, np.nan)
             bad = ~np.isfinite(out)
             if bad.any():
-                out[bad] = _gw_moment_quadrature(self, d[bad], n)
+                out[bad] = gw_moment_quadrature_unchecked(self, d[bad], n)
         bad = ~np.isfinite(out)
         if bad.any():
             raise ValueError(f"the GW moment of order {n:g} overflows double precision at d = {short_repr(d[bad])}: "
@@ -362,15 +362,17 @@ def gw_moment_quadrature(dist: HeightDistribution, d, order: float):
         raise TypeError(f"dist must be an asperity.heights.HeightDistribution, got {type(dist).__name__}")
     d, n = as_float_array(d, "d", allow_empty=True), check_order(order)
     with np.errstate(all="ignore"):
-        out = _gw_moment_quadrature(dist, d, n)
+        out = gw_moment_quadrature_unchecked(dist, d, n)
     if not np.isfinite(out).all():
         raise ValueError(f"the GW moment of order {n:g} overflows double precision at d = "
                          f"{short_repr(d[~np.isfinite(out)])}: give separations of physical size")
     return ufunc_result(out)
 
 
-def _gw_moment_quadrature(dist, d, order):
-    """:func:`gw_moment_quadrature` on checked arguments (the library's own calls)."""
+def gw_moment_quadrature_unchecked(dist, d, order):
+    """:func:`gw_moment_quadrature` without its checks, for the distributions' own calls on
+    arguments they checked: ``d`` a float array, ``order`` in (-1, 20]; where a term
+    overflows the result is inf (the callers redo or refuse it)."""
     d = np.asarray(d, dtype=float)
     lo_s, hi_s = dist.support
     out = np.zeros(d.shape)

@@ -26,7 +26,7 @@ import numpy as np
 from scipy import special
 
 from .._validation import as_float_array, check_finite_result, ufunc_result
-from .base import HeightDistribution, _gw_moment_quadrature, check_derivative_order, check_order
+from .base import HeightDistribution, check_derivative_order, check_order, gw_moment_quadrature_unchecked
 
 __all__ = ["Gaussian", "GAUSSIAN", "gaussian_moment"]
 
@@ -194,5 +194,5 @@ def gaussian_moment(x, order: float):
             out[closed] = special.gamma(k + 1.0) * np.exp(-0.25 * x[closed] ** 2) * D / _SQRT_2PI
         rest = ~closed & ~zero
         if np.any(rest):
-            out[rest] = _gw_moment_quadrature(GAUSSIAN, x[rest], k)
+            out[rest] = gw_moment_quadrature_unchecked(GAUSSIAN, x[rest], k)
     return ufunc_result(check_finite_result(out, f"the Gaussian moment of order {k:g}", x=x))

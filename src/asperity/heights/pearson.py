@@ -42,7 +42,14 @@ import numpy as np
 from scipy import special
 
 from .._validation import as_float_array, check_finite_result, check_scalar_range, check_scalar_real, ufunc_result
-from .base import SF_FLOOR, TAIL, HeightDistribution, _gw_moment_quadrature, check_derivative_order, check_order
+from .base import (
+    SF_FLOOR,
+    TAIL,
+    HeightDistribution,
+    check_derivative_order,
+    check_order,
+    gw_moment_quadrature_unchecked,
+)
 
 __all__ = ["PearsonIII", "pearson3_moment", "stirling_error", "SKEW_RANGE", "SKEW_MIN"]
 
@@ -231,7 +238,7 @@ class PearsonIII(HeightDistribution):
         n = check_order(order)
         if self.skew > 0 and self.k <= 16.0 and abs(self.k - round(self.k)) < 1e-12:
             return self._checked_moment(lambda x: _pearson3_form(x, n, self.skew), d, n)
-        return self._checked_moment(lambda x: _gw_moment_quadrature(self, x, n), d, n)
+        return self._checked_moment(lambda x: gw_moment_quadrature_unchecked(self, x, n), d, n)
 
 
 def pearson3_moment(d, order: float, skew: float):
