@@ -262,3 +262,37 @@ def test_tensile_load_alone_equals_it_among_others(alpha, beta, gamma, frac, big
     tol = 1e-9 if frac < 0.999 else 1e-4
     assert both.d[0] == pytest.approx(alone.d[0], rel=tol, abs=tol)
     np.testing.assert_allclose(m.separation_curve(both.d[:-1]).P, loads, rtol=1e-6)
+
+
+def _bisect_on_table(tab, load, lo, hi):
+    """The branch's crossing of ``load`` by bisection on the same table (falling force)."""
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if tab.sums(np.array([mid]))[0][0, 1] > load:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo <= 1e-15 * max(1.0, abs(mid)):
+            break
+    return 0.5 * (lo + hi)
+
+
+@pytest.mark.parametrize("p", [(0.0013027762421958938, 2084.9862030896425, 0.003480822212709001),
+                               (0.0012132150023507252, 370.5605001373439, 0.00011332775910550154),
+                               (0.01624477185584136, 191.85214968191914, 0.0004297341616563378),
+                               (0.00525, 784.6, 0.000165)])
+def test_loads_at_and_next_to_the_pull_off_are_the_tables_root(p):
+    """A review of the inversion's new stopping rule: at minus the pull-off force the steps
+    cycled between the end of the branch and a point 2e-8 before it until 'did not converge'
+    (1 set in 1400), and next to it Newton's fallback was taken for convergence with d 1e-4
+    off (the more tensile load the smaller d).  Now every load is the table's own root, as a
+    bisection on the same table finds it, and d falls as the load rises."""
+    tab = Tabulation(ModelParameters(*p), -3.0, 10.0)
+    br = stable_branch(tab, -3.0, 10.0)
+    fracs = np.array([1.0, 1 - 1e-12, 1 - 1e-10, 1 - 1e-8, 1 - 1e-6, 1 - 1e-4, 0.99, 0.5])
+    loads = br.P[-1] * fracs
+    d, _ = invert_branch(tab, loads, br.grid, br.P, br.dP)
+    for load, di in zip(loads, d, strict=True):
+        ref = _bisect_on_table(tab, load, br.grid[0], br.grid[-1])
+        assert di == pytest.approx(ref, abs=2e-8), (load, di, ref)  # sqrt of the force's rounding at the fold
+    assert np.all(np.diff(d) < 0)

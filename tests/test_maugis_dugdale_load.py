@@ -207,7 +207,8 @@ def test_refusals_below_the_branch_are_in_si_units(lam):
     for f, name, unit, far in routes:
         with pytest.raises(ValueError) as info:
             f([1e-9, far], **kw)
-        m = re.fullmatch(rf"{re.escape(name)} must be >= (\S+) {unit} \(.*\), got (\S+) {unit}", str(info.value))
+        m = re.fullmatch(rf"{re.escape(name)} must be >= (\S+) {unit} \(.*\), got (\S+) {unit} \(the first value "
+                         r"below its floor; each value's R, w, E\* set its own\)", str(info.value))
         assert m and float(m.group(2)) == far, str(info.value)
         floor = float(m.group(1))
         assert np.isfinite(f(floor * (1 - 1e-4), **kw)).all()

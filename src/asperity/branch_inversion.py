@@ -175,7 +175,8 @@ def _invert(tab, P, grid, Pg, dPg, sign=1.0):
     out = np.empty((P.size, 4))
     active = np.arange(P.size)
     target = sign * P
-    for _ in range(80):
+    moved = np.full(P.size, np.inf)  # each load's last move
+    for _ in range(200):
         if active.size == 0:
             break
         xa = x[active]
@@ -189,16 +190,21 @@ def _invert(tab, P, grid, Pg, dPg, sign=1.0):
             newton = np.where(g < 0, -r / g, np.nan)
             # Halley's variant: the root nearest 0 of the quadratic Taylor polynomial
             # r + g s + h s^2 / 2 (error O(step^3)), in the form free of cancellation; where
-            # the quadratic has no real root, Newton's step (kept to the bracket below).
+            # the quadratic has no real root (next to the pull-off), Newton's step.
             root = np.sqrt(g * g - 2.0 * h * r)
             quad = -2.0 * r / (g - root)
-        step = np.where(np.isfinite(quad) & (g - root < 0), quad, newton)
+        halley = np.isfinite(quad) & (g - root < 0)
+        step = np.where(halley, quad, newton)
         x_new = xa + step
-        bad = ~np.isfinite(x_new) | (x_new < a[active]) | (x_new > b[active])
+        # Bisection where the step leaves the bracket or does not halve the last move (next to
+        # the end of a branch, where dP/dd -> 0, the steps can creep or cycle: a review).
+        bad = ~np.isfinite(x_new) | (x_new < a[active]) | (x_new > b[active]) | \
+            (np.abs(step) > 0.5 * moved[active])
         x_new = np.where(bad, 0.5 * (a[active] + b[active]), x_new)
-        # Converged once the step is small and the linear term dominates the quadratic one:
-        # near the end of a branch (dP/dd -> 0) a small step says nothing about the error.
-        done = ~bad & (np.abs(step) <= 1e-5 * np.maximum(1.0, np.abs(xa))) & (np.abs(h * step) <= np.abs(g))
+        # Converged once a Halley step is small and the polynomial's linear term dominates
+        # (then the error after it is ~step^3: next to the end of a branch a small step alone
+        # proves nothing), or the bracket has closed, or the load is met exactly.
+        done = ~bad & halley & (np.abs(step) <= 1e-5 * np.maximum(1.0, np.abs(xa))) & (np.abs(h * step) <= np.abs(g))
         done |= (b[active] - a[active]) <= 1e-14 * np.maximum(1.0, np.abs(xa))
         done |= r == 0.0
         bad |= r == 0.0
@@ -207,8 +213,9 @@ def _invert(tab, P, grid, Pg, dPg, sign=1.0):
         d[fin] = np.where(bad[done], xa[done], x_new[done])
         sd = step[done, None]
         out[fin] = s0[done] + sd * (s1[done] + 0.5 * sd * s2[done])  # error ~ step^3
+        moved[active] = np.abs(x_new - xa)
         x[active] = x_new
         active = active[~done]
-    if active.size:  # pragma: no cover - Newton with bisection always converges
+    if active.size:  # pragma: no cover - bisection closes any bracket to 1e-14 within 60 steps
         raise RuntimeError("load inversion did not converge")
     return d, out

@@ -104,7 +104,8 @@ def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: s
     Raises
     ------
     ValueError
-        Naming ``name``, the floor and the smallest offending value, both in ``unit``.
+        Naming ``name``, the first offending value and its own floor (R, w, E* and lambda
+        set each value's), both in ``unit``.
 
     Examples
     --------
@@ -123,4 +124,5 @@ def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: s
     floor, k = fh * v / vh, 6
     while k < 17 and f"{floor:.{k}g}" == f"{v:.{k}g}":  # digits enough to tell them apart
         k += 1
-    raise ValueError(f"{name} must be >= {floor:.{k}g} {unit} ({what}), got {v:.{k}g} {unit}")
+    which = " (the first value below its floor; each value's R, w, E* set its own)" if bad.size > 1 else ""
+    raise ValueError(f"{name} must be >= {floor:.{k}g} {unit} ({what}), got {v:.{k}g} {unit}{which}")

@@ -247,13 +247,27 @@ def test_an_excel_error_cell_is_a_nan_cell_not_a_comment(tmp_path, first):
 
 
 def test_comment_lines_below_the_header_are_counted(tmp_path):
-    """A user trial: a row whose sample ID starts with '#' vanished as a comment, unnoted."""
-    d = read_data(write(tmp_path, "Sample,R (nm),pull_off (nN)\nA,10,4.9\n#2 (retest),20,9.4\nC,30,14.2\n% end\n"))
-    assert len(d) == 2
-    assert any(n.endswith("skipped 2 comment line(s) below the header (line(s) 3, 5: a line starting with '#' or "
+    """A user trial: a row whose sample ID starts with '#' vanished as a comment, unnoted.  A
+    marked line with the header's number of cells is a data row; others are comments, counted."""
+    d = read_data(write(tmp_path, "Sample,R (nm),pull_off (nN)\nA,10,4.9\n#2 (retest),20,9.4\nC,30,14.2\n% end\n"
+                                  "# a note\n"))
+    assert len(d) == 3 and d.conditions["R_m"].tolist() == pytest.approx([1e-8, 2e-8, 3e-8])
+    assert any(n.endswith("skipped 2 comment line(s) below the header (line(s) 5, 6: a line starting with '#' or "
                           "'%' is a comment)") for n in d.notes), d.notes
     with pytest.raises(ValueError, match=r"no data rows below the header \(2 line\(s\) below it start with '#'"):
-        read_data(write(tmp_path, "P,F\n#1,2\n#3,4\n"))
+        read_data(write(tmp_path, "P,F\n# one\n% two\n"))
+    with pytest.raises(ValueError, match=r"line 2, column 'P': '#1' is not a number"):
+        read_data(write(tmp_path, "P,F\n#1,2\n"))
+
+
+@pytest.mark.parametrize("text", ["%RH,load (nN),friction (nN)\n40,1,2\n41,3,4\n",
+                                  "#,load (nN),friction (nN)\n1,1,2\n2,3,4\n",
+                                  "# sample A, run 3\n% exported\nRH,load (nN),friction (nN)\n40,1,2\n41,3,4\n"])
+def test_a_header_that_starts_like_a_comment(tmp_path, text):
+    """A review: '%RH,load (nN),friction (nN)' was taken for a comment and the first data row
+    for the header.  A marked line above the data that names a column is the header."""
+    d = read_data(write(tmp_path, text))
+    assert d.x.tolist() == [1e-9, 3e-9] and d.y.tolist() == [2e-9, 4e-9]
 
 
 def test_a_column_of_the_wrong_dimension_is_ignored_beside_a_right_one(tmp_path):
@@ -304,8 +318,8 @@ def test_a_per_row_parameter_given_again_is_named():
     from asperity.fit import fit_pull_off
 
     data = pull_off_data([1e-7, 2e-7], physical=True, conditions={"R_m": [1e-6, 2e-6]})
-    with pytest.raises(ValueError, match=r"fix: R_m is given row by row by the data \(a column of the file\): "
-                                         "give it in one place only"):
+    with pytest.raises(ValueError, match=r"fix: R_m is given row by row by the data \(its conditions: a column of "
+                                         r"the file\), so it is neither fitted nor set here"):
         fit_pull_off(data, "jkr", material="Au", fix={"R_m": 2e-8})
 
 
@@ -315,6 +329,8 @@ def test_the_delimiter_is_the_one_that_cuts_header_and_data_alike(tmp_path):
     assert d.x.tolist() == [1e-9, 3e-9] and d.y.tolist() == [2e-9, 4e-9]
     d = read_data(write(tmp_path, "P;F;comment, if any\n1;2;x\n"))
     assert d.x.tolist() == [1.0]
+    d = read_data(write(tmp_path, "load (nN),\tfriction (nN)\n1,\t2\n3,\t4\n"))  # aligned by tabs (a review)
+    assert d.x.tolist() == [1e-9, 3e-9] and d.y.tolist() == [2e-9, 4e-9]
 
 
 @pytest.mark.parametrize("name", ["COF", "µ", "μ", "coefficient of friction"])

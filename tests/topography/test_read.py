@@ -478,5 +478,21 @@ def test_a_ragged_text_matrix_names_its_odd_line(tmp_path):
     lines = [" ".join(f"{v:.5f}" for v in row) for row in h]
     lines[6] = " ".join(lines[6].split()[:-1])
     (tmp_path / "m.txt").write_text("\n".join(lines) + "\n")
-    with pytest.raises(ValueError, match=r"; line 7 holds 9 numbers, the others 10\)$"):
+    with pytest.raises(ValueError, match=r"; line 7 holds 9 values, the others 10\)$"):
         read_topography(tmp_path / "m.txt", physical_sizes=("4um", "3um"), unit="nm")
+
+
+def test_a_trailing_delimiter_and_a_long_marked_file(tmp_path, monkeypatch):
+    """A review: a comma ending every line (a spreadsheet's) left the matrix refused without a
+    hint, and a file with a byte-order mark longer than the text limit was cut short unnoted."""
+    from asperity.topography import _textfile
+
+    h = np.random.default_rng(10).standard_normal((12, 10))
+    np.savetxt(tmp_path / "plain.txt", h)
+    (tmp_path / "t.csv").write_text("\n".join(",".join(f"{v:.18e}" for v in r) + "," for r in h) + "\n")
+    kw = {"physical_sizes": ("4um", "3um"), "unit": "nm"}
+    plain = read_topography(tmp_path / "plain.txt", **kw)
+    np.testing.assert_array_equal(read_topography(tmp_path / "t.csv", **kw).heights(), plain.heights())
+    monkeypatch.setattr(_textfile, "MAX_TEXT", 500)
+    (tmp_path / "b.txt").write_bytes(b"\xef\xbb\xbf" + (tmp_path / "plain.txt").read_bytes())
+    np.testing.assert_array_equal(read_topography(tmp_path / "b.txt", **kw).heights(), plain.heights())

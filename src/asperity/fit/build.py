@@ -47,8 +47,8 @@ def _expand(option, name: str, params: dict, base_names: dict, per_row=()) -> di
         key = str(key)
         targets = [key] if key in params else base_names.get(key, [])
         if not targets and key in per_row:  # a user trial: --R beside a file's R column
-            raise ValueError(f"{name}: {key} is given row by row by the data (a column of the file): give it in "
-                             "one place only")
+            raise ValueError(f"{name}: {key} is given row by row by the data (its conditions: a column of the "
+                             "file), so it is neither fitted nor set here")
         if not targets:
             raise ValueError(f"{name}: unknown parameter {key!r}; the parameters are {', '.join(params)}")
         for t in targets:

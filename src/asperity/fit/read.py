@@ -15,7 +15,9 @@ r"""Reading measured data from CSV files: columns found by their header names an
   and pull-off forces); an uncertainty column without a unit has its value column's unit.
 
 Comment lines start with ``#`` or ``%`` (those below the header are counted in a note;
-Excel's error values such as ``#N/A`` are cells, read as NaN); the delimiter is a comma, a
+Excel's error values such as ``#N/A`` are cells, read as NaN; a marked line that names a
+column is the header, one below it with the header's number of cells a data row:
+:mod:`asperity.fit._lines`); the delimiter is a comma, a
 tab or a semicolon (that of the header line); in a semicolon-separated file a decimal comma
 (``4,25``) is read as a decimal point, with a note.  Columns with no name and no values (a
 spreadsheet's padding) are dropped; a column whose unit has the wrong dimension
@@ -41,6 +43,8 @@ import re
 import numpy as np
 
 from ..units import parse_quantity, strict_float
+from ._lines import EXCEL_ERRORS
+from ._lines import split as split_lines
 from .data import KINDS, MAX_ROWS, Dataset
 from .headers import ROLES, SI_UNITS, UNIT_FLAGS, classify_header, condition_names, to_si_exact, unit_factor
 
@@ -82,14 +86,10 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
         if key not in ("load", "friction", "separation"):
             raise ValueError(f"units: unknown role {key!r}; give load, friction or separation")
     text, name = _read_text(path)
-    every = text.splitlines()
-    lines = [(i + 1, line) for i, line in enumerate(every)  # ',,' is a spreadsheet's empty row
-             if line.strip(" \t,;") and not _is_comment(line)]
-    if not lines:
+    found = split_lines(text)
+    if found is None:
         raise ValueError(f"{name}: no header line (the file is empty or holds only comments)")
-    header_line, header = lines[0]
-    skipped = [i + 1 for i, line in enumerate(every) if i + 1 > header_line and _is_comment(line)]
-    delimiter = _delimiter(header, lines[1][1] if len(lines) > 1 else "")
+    delimiter, lines, skipped = found
     rows = _drop_padding(list(csv.reader([line for _, line in lines], delimiter=delimiter)))
     headers = [h.strip() for h in rows[0]]
     if len(headers) == 1 and len(rows) > 1 and rows[1] and len(rows[1][0].split()) > 1:  # space-separated
@@ -161,26 +161,7 @@ def read_data(path, *, kind=None, units=None, drop_nan=False) -> Dataset:
         raise ValueError(f"{name}: {text}") from None
 
 
-#: Excel's error values: data cells (NaN, dropped with drop_nan), not comments.
-_EXCEL_ERRORS = ("#n/a", "#value!", "#div/0!", "#ref!", "#name?", "#num!", "#null!", "#spill!", "#calc!",
-                 "#getting_data")
 _DECIMAL_COMMA = re.compile(r"\s*[+-]?\d+,\d+(?:[eE][+-]?\d+)?\s*")
-
-
-def _delimiter(header: str, first: str) -> str:
-    """The delimiter that cuts the header and the first data line into as many cells (more than
-    one), tab and semicolon first (a user trial: 'Load (nN)<TAB>Friction, lateral (nN)' was cut at
-    its comma); else the first of comma, tab, semicolon in the header."""
-    for d in ("\t", ";", ","):
-        n = len(next(csv.reader([header], delimiter=d)))
-        if n > 1 and first and n == len(next(csv.reader([first], delimiter=d))):
-            return d
-    return next((d for d in (",", "\t", ";") if d in header), ",")
-
-
-def _is_comment(line: str) -> bool:
-    text = line.lstrip().lower()
-    return text.startswith(("#", "%")) and not text.startswith(_EXCEL_ERRORS)
 
 
 def _decimal_point(cell: str, delimiter: str, commas: list) -> str:
@@ -283,7 +264,7 @@ def _columns(headers, units, name):
                              f"--{UNIT_FLAGS[role]}-unit)")
     for key, header, err in misfits:  # ignored beside a column of the right dimension, else the error
         if key not in columns and all(k != key for k, _, _ in pending):
-            raise err
+            raise ValueError(f"{name}: {err}") from None
         ignored.append((header, f"not a unit of {key.replace('_', ' ')}"))
     for key, header, i in pending:
         value = columns.get(key.removesuffix("_err"))
@@ -349,7 +330,7 @@ def _physical(columns, used, name):
 
 def _number(cell: str, name, line_no, header) -> float:
     text = cell.strip()
-    if text.lower() in _NAN_TEXT or text.lower() in _EXCEL_ERRORS:
+    if text.lower() in _NAN_TEXT or text.lower() in EXCEL_ERRORS:
         return float("nan")
     try:
         value = strict_float(text)

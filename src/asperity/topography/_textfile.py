@@ -33,8 +33,8 @@ def open_bytes(name):
     if encoding is None and not _maybe_delimited(head):
         fobj.seek(0)
         return fobj
-    with fobj:
-        raw = head + fobj.read(MAX_TEXT)
+    with fobj:  # a marked file whole (cut, it would lose its end: a review); a delimited one up to MAX_TEXT
+        raw = head + fobj.read(-1 if encoding is not None else MAX_TEXT)
     if encoding is None and len(raw) > MAX_TEXT:
         return open(name, "rb")
     try:
@@ -58,17 +58,22 @@ def _maybe_delimited(head: bytes) -> bool:
 
 
 def _whitespace_matrix(text: str) -> str | None:
-    """``text`` with its delimiter made blanks if it is a delimited matrix of numbers, else None."""
+    """``text`` with its delimiter made blanks if it is a delimited matrix of numbers (a
+    delimiter ending every line, a spreadsheet's, dropped), else None."""
     lines = text.splitlines()
-    data = [line for line in lines if line.strip() and not line.lstrip().startswith("#")]
+    is_data = [bool(line.strip()) and not line.lstrip().startswith("#") for line in lines]
+    data = [line.strip() for line, k in zip(lines, is_data, strict=True) if k]
+    if not data:
+        return None
     for d in (",", ";"):
-        cells = [line.strip().split(d) for line in data]
-        if not data or len(cells[0]) < 2 or any(len(c) != len(cells[0]) for c in cells):
+        trailing = all(x.endswith(d) for x in data)
+        rows = [(x[:-1] if trailing else x).split(d) for x in data]
+        if len(rows[0]) < 2 or any(len(r) != len(rows[0]) for r in rows):
             continue
-        if all(_NUMBER.fullmatch(cell.strip()) and " " not in cell.strip() and "\t" not in cell.strip()
-               for row in cells for cell in row):
-            return "\n".join(line if not line.strip() or line.lstrip().startswith("#")
-                             else line.replace(d, " ") for line in lines) + "\n"
+        if all(_NUMBER.fullmatch(c.strip()) for r in rows for c in r):  # no blank inside a number
+            it = iter(rows)
+            return "\n".join(" ".join(c.strip() for c in next(it)) if k else line
+                             for line, k in zip(lines, is_data, strict=True)) + "\n"
     return None
 
 
@@ -82,8 +87,10 @@ def ragged_note(name) -> str:
         text = raw.decode("utf-8-sig") if len(raw) <= MAX_TEXT else ""
     except (OSError, UnicodeDecodeError):
         return ""
-    counts = [(i + 1, len(line.replace(",", " ").replace(";", " ").split())) for i, line in
-              enumerate(text.splitlines()) if line.strip() and not line.lstrip().startswith("#")]
+    numbered = [(i + 1, line.strip()) for i, line in enumerate(text.splitlines())
+                if line.strip() and line.lstrip()[:1] not in ("#", "%")]
+    d = next((d for d in (",", ";") if sum(d in line for _, line in numbered) > len(numbered) // 2), None)
+    counts = [(i, len(line.removesuffix(d).split(d)) if d else len(line.split())) for i, line in numbered]
     if len(counts) < 3:
         return ""
     values = [n for _, n in counts]
@@ -93,6 +100,6 @@ def ragged_note(name) -> str:
         return "; decimal commas ('1,5') are not read: write decimal points"
     if not odd or len(odd) > len(counts) // 2:
         return ""
-    return (f"; line {odd[0][0]} holds {odd[0][1]} numbers, the others {common}" if len(odd) == 1 else
+    return (f"; line {odd[0][0]} holds {odd[0][1]} values, the others {common}" if len(odd) == 1 else
             f"; {len(odd)} lines (the first, line {odd[0][0]}) hold other numbers of values than the {common} "
             "of the rest")
