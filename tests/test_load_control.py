@@ -296,3 +296,17 @@ def test_loads_at_and_next_to_the_pull_off_are_the_tables_root(p):
         ref = _bisect_on_table(tab, load, br.grid[0], br.grid[-1])
         assert di == pytest.approx(ref, abs=2e-8), (load, di, ref)  # sqrt of the force's rounding at the fold
     assert np.all(np.diff(d) < 0)
+
+
+def test_stepping_down_stops_at_the_floor_not_beyond():
+    """A hunt: a large load beside tensile ones stepped the bracket from -7000 to -11000 sigma
+    and failed with 'd_lo must lie in [-10000, ...]' although -7371 carries it; the steps now
+    stop at D_MIN, and a load beyond it gets the P_max message."""
+    p = (0.001158445865307078, 10.646100276351195, 0.003706915958986186)
+    m = asperity.Model(*p)
+    po = m.pull_off()
+    r = m.load_curve([-0.5 * po.force, 316227.7660168379])
+    assert r.d[1] == pytest.approx(asperity.load_curve([316227.7660168379], *p).d[0], rel=1e-9)
+    with pytest.raises(ValueError, match=r"P_max \(the largest load P\) = 1e\+06 is too large .* below d/sigma = "
+                                         r"-10000"):
+        m.load_curve([-0.5 * po.force, 1e6])

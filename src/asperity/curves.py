@@ -33,7 +33,7 @@ from .load_control import (
     start_separation,
 )
 from .multi_asperity import friction_coefficient, mean_pressure
-from .tabulation import D_MAX, Tabulation, check_separation
+from .tabulation import D_MAX, D_MIN, Tabulation, check_separation
 
 __all__ = ["CurveResult", "COLUMNS", "PullOff", "Model", "separation_curve", "load_curve", "pull_off", "MAX_POINTS"]
 
@@ -185,7 +185,7 @@ class Model:
         branch = stable_branch(self.tabulation(d_lo, d_hi), d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
                                pull_off=self._pull_off.get(d_hi))
         if not branch.P[0] > P_max:  # the Hertz estimate fell short: step down (bracket_low) and redo
-            d_lo, self._tab = bracket_low(branch.tab, P_max, d_lo - max(2.0, 0.5 * abs(d_lo)), d_hi)
+            d_lo, self._tab = bracket_low(branch.tab, P_max, max(d_lo - max(2.0, 0.5 * abs(d_lo)), D_MIN), d_hi)
             branch = stable_branch(self._tab, d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
                                    pull_off=branch.pull_off)
         self._tab = branch.tab

@@ -204,14 +204,16 @@ def bracket_low(tab: Tabulation, P_max, d_lo, d_hi) -> tuple[float, Tabulation]:
     ----------
     Adams et al., Eqs (6), (18).
     """
-    d_lo, d_hi = check_tabulation(tab, d_lo, d_hi, covered=False)
     P_max = check_scalar_real(P_max, "P_max")
+    _check_floor(check_scalar_real(d_lo, "d_lo"), P_max, tab.params)
+    d_lo, d_hi = check_tabulation(tab, d_lo, d_hi, covered=False)
     while True:
-        _check_floor(d_lo, P_max, tab.params)
         tab = tab.extended(d_lo, d_hi)
         if tab.sums(np.array([d_lo]))[0][0, 1] > P_max:
             return d_lo, tab
-        d_lo = d_lo - max(2.0, 0.5 * abs(d_lo))
+        if d_lo == D_MIN:  # the steps stop at the floor, not beyond it (a hunt: 'd_lo must lie in ...')
+            _check_floor(-np.inf, P_max, tab.params)
+        d_lo = max(d_lo - max(2.0, 0.5 * abs(d_lo)), D_MIN)
 
 
 def force_grid(tab: Tabulation, d_lo, d_hi, n=None):
