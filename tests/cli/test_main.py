@@ -1,5 +1,6 @@
 """``asperity.cli``: the parser, main's error contract, the entry point and start-up cost."""
 
+import os
 import subprocess
 import sys
 import textwrap
@@ -165,3 +166,19 @@ def test_sigterm_interrupts_like_ctrl_c(tmp_path):
     assert partial.exists() and not out.exists()
     done = subprocess.run(argv + ["--resume"], capture_output=True, text=True, env=env, timeout=300)
     assert done.returncode == 0 and out.exists() and not partial.exists(), done.stderr
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full on this system")
+def test_standard_output_full_or_closed_is_one_line_not_a_traceback(tmp_path):
+    """A CLI check: '> /dev/full' and a reader that leaves ('| true') ended in Python tracebacks
+    with status 1.  Now a full output is one error line (status 2) and a closed pipe ends
+    quietly (141, as a shell tool killed by SIGPIPE)."""
+    argv = [sys.executable, "-m", "asperity.cli", "load", *MODEL, "--P", "1:1e5:20000", "--format", "csv"]
+    with open("/dev/full", "w") as full:
+        res = subprocess.run(argv, stdout=full, stderr=subprocess.PIPE, text=True)
+    assert res.returncode == 2 and res.stderr == ("asperity: error: cannot write the output: No space left on "
+                                                  "device\n"), res.stderr
+    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc.stdout.close()  # the reader leaves before the first byte
+    _, err = proc.communicate()
+    assert proc.returncode == 141 and err == "", err

@@ -21,6 +21,7 @@ Command modules import NumPy, SciPy and the model inside ``run``, after parsing,
 from __future__ import annotations
 
 import argparse
+import os
 import signal
 import sys
 import threading
@@ -127,5 +128,22 @@ def _main(parser, argv) -> int:
         terminated = isinstance(exc, Terminated)
         print(f"asperity: interrupted{' (SIGTERM)' if terminated else ''}", file=sys.stderr)
         return 143 if terminated else 130
+    except BrokenPipeError:  # the reader left ('asperity load ... | head -1'): quietly, as a shell tool does
+        _discard_stdout()
+        return 141
+    except OSError as exc:  # standard output full or gone (> /dev/full): one line, not a traceback
+        print(f"asperity: error: cannot write the output: {exc.strerror or exc}", file=sys.stderr)
+        _discard_stdout()
+        return 2
     return 0
+
+
+def _discard_stdout() -> None:
+    """Point standard output at the null device, so that Python's flush at exit does not
+    report the same failure again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # no file descriptor (a test's stand-in)
+        pass
 

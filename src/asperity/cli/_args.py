@@ -101,7 +101,8 @@ MODEL_HELP = {name: MODEL_PARAMETERS[name].help() for name in ("alpha", "beta", 
 MATERIAL_FORMS = ("--material Au is ONE gold body on a rigid flat (the paper's set-up); --material Au/Au is TWO "
                   "gold bodies (E* and G* halve and the answers change: the pull-off force of a surface with "
                   "sigma_s = 2nm, R = 1um is 1.6x larger); --material A/B pairs any two table names, as does "
-                  "--material A --material2 B. "
+                  "--material A --material2 B (two bodies of different Burgers vectors, or with no tabulated "
+                  "work of adhesion between them, need --b and --w). "
                   "Without --material, --E and --nu describe a body of your own. --E/--nu (first body), "
                   "--E2/--nu2 (second body), --b, --w, --h or --sigma0 replace the table's values; "
                   "'asperity materials' lists the table.")
@@ -233,8 +234,8 @@ def add_interaction_argument(parser: argparse.ArgumentParser) -> None:
                              "cgp2008:k=0.05 (k = Delta/sigma_s per unit load P/(N G b^2))")
 
 
-_NU_HELP = (f"{MODEL_HELP['nu']} (the default of the dimensionless model); with a physical contact: Poisson's "
-            "ratio of the (first) body, replacing the table's, no default (a body of your own, --E, needs it)")
+_NU_BODY = "Poisson's ratio of the (first) body, replacing the table's, no default (a body of your own, --E, needs it)"
+_NU_HELP = f"{MODEL_HELP['nu']} (the default of the dimensionless model); with a physical contact: {_NU_BODY}"
 
 
 def _help(name: str, extra: str = "", symbol: str | None = None) -> str:
@@ -306,14 +307,16 @@ def add_body_arguments(parser: argparse.ArgumentParser, *, adhesion: bool = True
     :func:`add_contact_arguments` adds them with the surface; a command whose surface is its
     own (``asperity bem``, a non-adhesive comparison) adds them alone, without adhesion.
     """
-    forms = MATERIAL_FORMS if adhesion else MATERIAL_FORMS.replace("--b, --w, --h or --sigma0", "--b")
+    forms = MATERIAL_FORMS if adhesion else MATERIAL_FORMS.replace("--b, --w, --h or --sigma0", "--b").replace(
+        " (two bodies of different Burgers vectors, or with no tabulated work of adhesion between them, need --b and "
+        "--w)", "")
     b = parser.add_argument_group("physical contact: the bodies (quantities with units, e.g. 70GPa, 0.25nm, "
                                   "0.1J/m^2)", _paragraph(forms))
     b.add_argument("--material", metavar="NAME",
                    help="table name: 'Au' (on a rigid flat), 'Au/Au' (two bodies), 'A/B'")
     b.add_argument("--E", metavar="STRESS", help=_help("E", " of the (first) body, e.g. 70GPa"))
-    try:
-        b.add_argument("--nu", type=decimal, default=None, help=_NU_HELP)
+    try:  # without the model's group (asperity bem) there is no dimensionless default to name
+        b.add_argument("--nu", type=decimal, default=None, help=_NU_HELP if adhesion else _NU_BODY)
     except argparse.ArgumentError:  # already there: the model group's --nu serves both
         pass
     b.add_argument("--material2", metavar="NAME", help="second elastic body from the table, instead of the "
