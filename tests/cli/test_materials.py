@@ -33,3 +33,17 @@ def test_materials_values_round_trip(capsys):
         for key in ("E_Pa", "nu", "b_m", "work_of_adhesion_J_m2", "hardness_Pa", "ise_H0_Pa", "ise_h_star_m"):
             want = table[r["name"]][key]
             assert (r[key] == "") if want is None else float(r[key]) == want
+
+
+def test_materials_json_has_null_for_missing_values(capsys):
+    """A CLI check: missing values were "" among the numbers (strict JSON has null, as the README says)."""
+    import json
+
+    from asperity.materials import material_table
+
+    code, out, _ = run(capsys, "materials", "--format", "json")
+    rows = json.loads(out)
+    table = {r["name"]: r for r in material_table()}
+    assert code in (0, None) and rows and all(v != "" for r in rows for v in r.values())
+    assert all(r[k] == table[r["name"]][k] for r in rows for k in r)
+    assert any(v is None for r in rows for v in r.values())

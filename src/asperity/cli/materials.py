@@ -26,5 +26,7 @@ def run(args) -> None:
     from ._output import format_rows, output_format, write_outputs
 
     keys = [*KEYS, "sources"] if args.sources else list(KEYS)
-    rows = [{k: ("" if row.get(k) is None else row.get(k)) for k in keys} for row in material_table()]
-    write_outputs(format_rows(rows, output_format(args)), args)
+    fmt = output_format(args)
+    missing = None if fmt == "json" else ""  # JSON's null (a CLI check found "" among the numbers)
+    rows = [{k: (missing if row.get(k) is None else row.get(k)) for k in keys} for row in material_table()]
+    write_outputs(format_rows(rows, fmt), args)
