@@ -305,3 +305,11 @@ def test_format_si_reads_back_to_four_digits_with_a_mantissa_below_1000(value):
     scale = {f"{p}Pa": 10.0**e for e, p in _PREFIXES.items()}[unit]
     assert 1 <= abs(float(number)) < 1000
     assert float(number) * scale == pytest.approx(value, rel=5e-4)
+
+
+def test_a_word_that_is_no_unit_is_not_offered_back_as_one():
+    """A CLI check: '--fix R_m=abc' suggested "(e.g. '1 abc')"."""
+    with pytest.raises(ValueError, match=r"^x = 'abc' is not a number with a unit \(e\.g\. '2\.5nm', '70GPa'\)$"):
+        parse_quantity("abc", "m", "x")
+    with pytest.raises(ValueError, match=r"has no number: give one before the unit \(e\.g\. '1 nm'\)"):
+        parse_quantity("nm", "m", "x")

@@ -267,6 +267,8 @@ def _check_one_number(stripped: str, text: str, name: str) -> None:
         glued = re.match(r"[+-]?(?:nan|inf(?:inity)?)", stripped, re.IGNORECASE)
         if glued and _is_unit(stripped[glued.end():]):  # 'nanGPa': NaN glued to its unit ('nanometer' is not)
             raise ValueError(f"{name} = {text!r}: must be a finite number with its unit (no NaN or infinity)")
+        if re.match(r"[A-Za-z\u00b5\u03bc\u00c5\u212b]", stripped) and not _is_unit(stripped):  # 'abc'
+            raise ValueError(f"{name} = {text!r} is not a number with a unit (e.g. '2.5nm', '70GPa')")
         example = stripped if re.match(r"[A-Za-z\u00b5\u03bc\u00c5\u212b]", stripped) else "nm"
         raise ValueError(f"{name} = {text!r} has no number: give one before the unit (e.g. '1 {example}')")
     if _JUXTAPOSED.search(stripped):

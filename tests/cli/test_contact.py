@@ -103,7 +103,7 @@ def test_rms_with_bandwidth_equals_the_api(capsys):
     ([*S_ARGS[:-2], "--material", "Au"], "needs --area"),
     (["--material", "Au", "--R", "1um", "--eta", "1/um^2", "--area", "1mm^2"], "--sigma-s (or --rms)"),
     (["--material", "Au", *S_ARGS, "--bandwidth", "10"], "--bandwidth only applies with --rms"),
-    (["--material", "Au", *S_ARGS, "--size", "5um"], "only apply with --surface"),
+    (["--material", "Au", *S_ARGS, "--size", "5um"], "--size applies only with --surface"),
     (["--material", "Au", *S_ARGS, "--surface", "x.npy"], "--surface gives sigma_s, R and eta"),
     (["--material", "Au", *S_ARGS, "--tau", "50MPa", "--a1", "30"], "--tau (a constant shear strength)"),
     (["--material", "Au", *S_ARGS, "--alpha", "0.1"], "not both"),

@@ -176,7 +176,7 @@ def _check_surface_options(args) -> None:
     else:
         stray = _given(args, ("size", "unit", "method"))
         if stray:
-            raise UsageError(f"{', '.join(stray)} only apply with --surface FILE")
+            raise UsageError(f"{', '.join(stray)} {'applies' if len(stray) == 1 else 'apply'} only with --surface FILE")
         if args.sigma_s is not None and args.rms is not None:
             raise UsageError("give --sigma-s (summit heights) or --rms (all heights, with --bandwidth), not both")
         if args.rms is not None and args.alpha_n is None:

@@ -76,8 +76,9 @@ def comparison_notes(table, methods, nominal_area, *, elongated=None, rms_slope=
             continue
         below = np.asarray(gap, dtype=float) < 0
         if below.any():
-            notes.append(f"the mean gap of {_LABELS[method]} is negative from {_first(P, below)} "
-                         f"({float(np.nanmin(gap)):.3g} m): the model is past its validity there")
+            low = int(np.nanargmin(np.asarray(gap, dtype=float)))  # a CLI check: the least gap was shown
+            notes.append(f"the mean gap of {_LABELS[method]} is negative from {_first(P, below)} (down to "
+                         f"{float(gap[low]):.3g} m, at P = {P[low]:.4g} N): the model is past its validity there")
     if elongated is not None and elongated > ELONGATED_SHARE:
         notes.append(f"{100 * elongated:.3g} % of the map's summits are elongated (principal curvatures more than "
                      "10 times apart: ridges, a lay): ICHA's Hertz caps of the equivalent sphere overstate their "
