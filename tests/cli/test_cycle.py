@@ -145,15 +145,17 @@ def test_plot(capsys, tmp_path):
 
 
 @pytest.mark.parametrize("argv, needle", [
-    (["cycle", *ABOVE, "--points", "5"], "exactly one of d_min"),
-    (["cycle", *ABOVE, "--dmin", "1", "--preload", "5"], "exactly one of d_min"),
+    (["cycle", *ABOVE, "--points", "5"], "exactly one of --dmin (the closest approach) and --preload"),
+    (["cycle", *ABOVE, "--dmin", "1", "--preload", "5"], "exactly one of --dmin"),
+    (["cycle", *AU, "--points", "5"], "exactly one of --dmin"),
     (["cycle", *ABOVE, "--dmin", "3", "--dmax", "2"], "d_min"),
     (["cycle", *ABOVE, "--dmin", "0", "--stiffness", "-1"], "stiffness"),
     (["cycle", *ABOVE, "--preload", "-5"], "preload"),
     (["cycle", *ABOVE, "--preload", "1e300"], "preload"),
     (["cycle", *ABOVE, "--dmin", "2nm"], "--dmin"),
     (["cycle", *ABOVE, "--dmin", "0", "--d", "1,,2"], "--d"),
-    (["cycle", *ABOVE, "--dmin", "0", "--d", "1", "--stiffness", "10"], "d (separations)"),
+    (["cycle", *ABOVE, "--dmin", "0", "--d", "1", "--stiffness", "10"], "give --points instead of --d"),
+    (["cycle", *AU, "--dmin", "0nm", "--d", "1nm", "--stiffness", "10N/m"], "give --points instead of --d"),
     (["cycle", "--alpha", "0.02", "--beta", "50", "--dmin", "0"], "--gamma"),
     (["cycle", *AU, "--preload", "-1mN"], "preload"),
     (["cycle", *AU, "--preload", "1mN", "--stiffness", "-0.1N/m"], "stiffness"),

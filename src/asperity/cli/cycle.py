@@ -94,6 +94,11 @@ def run(args) -> None:
 
     physical = is_physical(args)
     values = {opt: _number(getattr(args, opt), opt, physical) for opt in OPTIONS}
+    if (values["dmin"] is None) == (values["preload"] is None):  # in the options' words (a CLI check)
+        raise UsageError("give exactly one of --dmin (the closest approach) and --preload (the largest compressive "
+                         "load)")
+    if args.d is not None and values["stiffness"] is not None and values["stiffness"] != float("inf"):
+        raise UsageError("with --stiffness the measured path is computed: give --points instead of --d")
     kwargs = {"d_min": values["dmin"], "preload": values["preload"], "d_max": values["dmax"], "n": args.points,
               "u_in": 0.0 if values["u_in"] is None else values["u_in"]}
     if args.d is not None:
