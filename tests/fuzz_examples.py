@@ -349,6 +349,8 @@ SKIP = {
                     "asperity.height_sums.HeightSums", "asperity.heights.fit.log_likelihood",
                     "asperity.heights.fit.ks_distance", "asperity.heights.samples.standardise")},
     "asperity.heights.base.HeightDistribution": "an abstract base class without parameters",
+    "asperity.validation.bem.check_solver_options": "an input check of bem_contact and validate_surface, which are "
+                                                    "fuzzed with the same inputs",
     "asperity.maugis_units.check_floor_in_si": "an input check of the SI JKR and Maugis-Dugdale functions on values "
                                                "they converted (tests/test_maugis_dugdale_load.py tests its messages)",
     "asperity.heights.mixture.GaussianSum": "a base class without a constructor of its own (Mixture and Empirical "

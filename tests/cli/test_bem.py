@@ -108,6 +108,8 @@ def test_table_and_progress(capsys, scan):
     (["--load", "1mN", "--model", "gw,"], "models: empty name"),
     (["--load", "1mN", "--model", "icha", "--interaction", "cgp2008"], "include 'gw'"),
     (["--load", "1mN", "--material", "Unobtainium"], "Unobtainium"),
+    (["--load", "1mN", "--tolerance", "0"], r"tolerance must lie in (0, 0.1], got 0.0"),
+    (["--load", "1mN", "--maxiter", "0"], "maxiter must be a positive integer, got 0"),
 ])
 def test_bad_input_one_line(capsys, scan, extra, needle):
     argv = ["bem", str(scan), "--size", "4um,4um", "--unit", "nm", "--material", "Au", "--quiet", *extra]
@@ -168,3 +170,17 @@ def test_the_helps_choices_and_default_are_the_librarys():
     from asperity.validation.bem import DEFAULT_TOLERANCE
 
     assert bem.INTERACTIONS == tuple(interaction_names()) and bem.DEFAULT_TOLERANCE == DEFAULT_TOLERANCE
+
+
+def test_solver_options_are_checked_before_the_map_is_read(monkeypatch, tmp_path):
+    """A CLI check: --tolerance 0 was refused only after the scan was read and analysed."""
+    from asperity import validation
+    from asperity.validation import compare
+
+    def fail(*args, **kwargs):
+        raise AssertionError("the map was read")
+
+    monkeypatch.setattr(compare, "_topography", fail)
+    for kwargs, needle in (({"tolerance": 0.5}, "tolerance must lie in"), ({"maxiter": 0}, "maxiter")):
+        with pytest.raises(ValueError, match=needle):
+            validation.validate_surface(tmp_path / "none.npy", [1e-3], material="Au", **kwargs)

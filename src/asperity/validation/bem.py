@@ -45,11 +45,12 @@ import numpy as np
 
 from .._csv import columns_to_csv, columns_to_dataframe
 from .._optional import require
-from .._validation import as_float_array, check_bool, check_mean_pressure, check_scalar_positive
+from .._validation import as_float_array, check_bool, check_mean_pressure, check_scalar_positive, check_scalar_real
 from .progress import progress_bar
 from .spots import count_spots
 
-__all__ = ["BemCurve", "bem_contact", "check_loads", "subsample", "with_periodicity", "MIN_GRID", "MAX_LOADS",
+__all__ = ["BemCurve", "bem_contact", "check_loads", "check_solver_options",
+           "subsample", "with_periodicity", "MIN_GRID", "MAX_LOADS",
            "DEFAULT_TOLERANCE", "P_BAR_RANGE"]
 
 #: Fewest grid points along each axis for a boundary-element solve (after ``grid``).
@@ -229,6 +230,17 @@ def check_loads(P) -> np.ndarray:
     return P
 
 
+def check_solver_options(tolerance, maxiter) -> float:
+    """The solver's ``tolerance`` as a float, 0 < tolerance <= 0.1, and ``maxiter`` a positive
+    integer; a ValueError naming the one that is not."""
+    tolerance = check_scalar_real(tolerance, "tolerance")
+    if not 0.0 < tolerance <= 0.1:
+        raise ValueError(f"tolerance must lie in (0, 0.1], got {tolerance!r}")
+    if isinstance(maxiter, bool) or not isinstance(maxiter, int | np.integer) or maxiter < 1:
+        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+    return tolerance
+
+
 def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DEFAULT_TOLERANCE,
                 maxiter=10000, progress=False) -> BemCurve:
     r"""Boundary-element contact of a rigid rough surface on an elastic half-space, versus load.
@@ -286,11 +298,7 @@ def bem_contact(topography, P, *, E_star, periodic=None, grid=None, tolerance=DE
     P = check_loads(P)
     E_star = check_scalar_positive(E_star, "E_star", "Pa")
     progress = check_bool(progress, "progress")
-    tolerance = check_scalar_positive(tolerance, "tolerance", "")
-    if tolerance > 0.1:
-        raise ValueError(f"tolerance must lie in (0, 0.1], got {tolerance!r}")
-    if isinstance(maxiter, bool) or not isinstance(maxiter, int | np.integer) or maxiter < 1:
-        raise ValueError(f"maxiter must be a positive integer, got {maxiter!r}")
+    tolerance = check_solver_options(tolerance, maxiter)
     topo = _prepare(topography, grid, periodic)
     periodic = bool(topo.is_periodic) if periodic is None else check_bool(periodic, "periodic")
     cm = _contact_mechanics()

@@ -50,7 +50,15 @@ from ..physical import PhysicalContact
 from ..quantities import VALIDATION_COLUMNS
 from ..topography import analyse_surface, read_topography
 from ..topography.summits import plain
-from .bem import DEFAULT_TOLERANCE, BemCurve, bem_contact, check_loads, subsample, with_periodicity
+from .bem import (
+    DEFAULT_TOLERANCE,
+    BemCurve,
+    bem_contact,
+    check_loads,
+    check_solver_options,
+    subsample,
+    with_periodicity,
+)
 from .models import AREA_METHODS, check_models, model_columns, run_icha, run_slope_law
 from .notes import comparison_notes, model_warning_notes
 from .plot import plot_validation
@@ -255,6 +263,7 @@ def validate_surface(surface, P, *, material, grid=None, periodic=None, interact
     models = check_models(models)
     progress = check_bool(progress, "progress")
     P = check_loads(P)
+    check_solver_options(tolerance, maxiter)  # before the map is read and analysed (a CLI check)
     if "gw" not in models and interaction != "none":
         raise ValueError(f"interaction={interaction!r} corrects the GW model: include 'gw' in models")
     topo, source = _topography(surface, read_kwargs)
