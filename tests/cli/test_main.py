@@ -176,9 +176,45 @@ def test_standard_output_full_or_closed_is_one_line_not_a_traceback(tmp_path):
     argv = [sys.executable, "-m", "asperity.cli", "load", *MODEL, "--P", "1:1e5:20000", "--format", "csv"]
     with open("/dev/full", "w") as full:
         res = subprocess.run(argv, stdout=full, stderr=subprocess.PIPE, text=True)
-    assert res.returncode == 2 and res.stderr == ("asperity: error: cannot write the output: No space left on "
-                                                  "device\n"), res.stderr
+    assert res.returncode == 2 and res.stderr == ("asperity: error: cannot write to standard output: No space left "
+                                                  "on device\n"), res.stderr
     proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     proc.stdout.close()  # the reader leaves before the first byte
     _, err = proc.communicate()
     assert proc.returncode == 141 and err == "", err
+
+
+class _Failing:
+    """A standard output whose writes fail with ``error``."""
+
+    def __init__(self, error):
+        self.error = error
+
+    def write(self, text):
+        raise self.error
+
+    def flush(self):
+        pass
+
+
+def test_only_writes_to_standard_output_are_judged_as_such(monkeypatch, capsys):
+    """A review: a catch-all OSError handler called any OSError (a Dask comm, a worker's
+    directory) 'cannot write the output', and a BrokenPipeError from anywhere ended quietly.
+    Now only standard output's own failures are so reported; in a caller's process its
+    standard output is left as it is."""
+    from asperity.cli import load
+
+    argv = ["load", *MODEL, "--P", "10", "--format", "csv"]
+    monkeypatch.setattr(sys, "stdout", _Failing(BrokenPipeError()))
+    assert main(argv) == 141
+    monkeypatch.setattr(sys, "stdout", _Failing(OSError(28, "No space left on device")))
+    assert main(argv) == 2
+    monkeypatch.undo()
+    assert capsys.readouterr().err == "asperity: error: cannot write to standard output: No space left on device\n"
+
+    def boom(args):
+        raise ConnectionResetError(104, "a worker's connection")
+
+    monkeypatch.setattr(load, "run", boom)
+    with pytest.raises(ConnectionResetError):
+        main(argv)

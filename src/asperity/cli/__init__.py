@@ -31,6 +31,7 @@ from .._optional import MissingDependency
 from .._version import __version__
 from . import bem, cycle, explore, fit, load, materials, md, plot, pulloff, reproduce, separation, surface, sweep
 from ._args import UNITS, UsageError, join_negative_lists, parse_list
+from ._lists import OutputClosed
 
 __all__ = ["main", "build_parser", "parse_list", "UsageError", "COMMANDS"]
 
@@ -102,21 +103,20 @@ def main(argv=None) -> int:
     with Python's "leaked semaphore" warning and no line of ours).
     """
     parser = build_parser()
-    argv = sys.argv[1:] if argv is None else argv
     # (not where SIGTERM is ignored by the parent, as Python keeps an ignored SIGINT)
     in_main = threading.current_thread() is threading.main_thread() and \
         signal.getsignal(signal.SIGTERM) is not signal.SIG_IGN
     previous = signal.signal(signal.SIGTERM, _terminate) if in_main else None  # (None: set outside Python)
     try:
-        return _main(parser, argv)
+        return _main(parser, argv, discard=argv is None)
     finally:
         if in_main and previous is not None:
             signal.signal(signal.SIGTERM, previous)
 
 
-def _main(parser, argv) -> int:
+def _main(parser, argv, discard=False) -> int:
     try:
-        args = parser.parse_args(join_negative_lists(argv))
+        args = parser.parse_args(join_negative_lists(sys.argv[1:] if argv is None else argv))
         if args.command is None:
             parser.print_help()
             return 2
@@ -128,22 +128,20 @@ def _main(parser, argv) -> int:
         terminated = isinstance(exc, Terminated)
         print(f"asperity: interrupted{' (SIGTERM)' if terminated else ''}", file=sys.stderr)
         return 143 if terminated else 130
-    except BrokenPipeError:  # the reader left ('asperity load ... | head -1'): quietly, as a shell tool does
-        _discard_stdout()
+    except OutputClosed:  # the reader left ('asperity load ... | head -1'): quietly, as a shell tool does
+        if discard:
+            _discard_stdout()
         return 141
-    except OSError as exc:  # standard output full or gone (> /dev/full): one line, not a traceback
-        print(f"asperity: error: cannot write the output: {exc.strerror or exc}", file=sys.stderr)
-        _discard_stdout()
-        return 2
     return 0
 
 
 def _discard_stdout() -> None:
     """Point standard output at the null device, so that Python's flush at exit does not
-    report the same failure again."""
+    report the closed pipe again (only for the command line itself: a caller's own output
+    stays as it is)."""
     try:
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, ValueError, AttributeError):  # no file descriptor (a test's stand-in)
+    except (OSError, ValueError, AttributeError):  # no file descriptor
         pass
 

@@ -17,6 +17,7 @@ from .._numbers import strict_float
 __all__ = [
     "MAX_POINTS",
     "UsageError",
+    "OutputClosed",
     "parse_list",
     "quantity",
     "optional_quantity",
@@ -30,6 +31,10 @@ MAX_POINTS = 10**6
 
 class UsageError(Exception):
     """A problem with the command line or its values: one line, exit status 2."""
+
+
+class OutputClosed(Exception):
+    """Standard output's reader left ('asperity load ... | head -1'): the command ends quietly."""
 
 
 def _show(text: str, limit: int = 60) -> str:

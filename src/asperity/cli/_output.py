@@ -28,11 +28,24 @@ from .._atomic import atomic_path
 from .._csv import rows_to_csv
 from .._json import dumps
 from .._validation_files import IMAGE_FORMATS
-from ._args import UsageError
+from ._lists import OutputClosed, UsageError
 
 __all__ = ["output_format", "check_targets", "output_targets",
            "format_rows", "format_json", "format_physical", "comment_header", "curve_rows",
-           "write_outputs", "image_format"]
+           "write_outputs", "image_format", "say"]
+
+
+def say(text: str) -> None:
+    """Write ``text`` to standard output; a full or failing output is a one-line error, a reader
+    that left :class:`OutputClosed` (a CLI check: both were tracebacks).  Only these writes are
+    so judged: an OSError elsewhere (a file, a cluster) keeps its own message."""
+    try:
+        sys.stdout.write(text)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        raise OutputClosed from None
+    except OSError as err:
+        raise UsageError(f"cannot write to standard output: {err.strerror or err}") from None
 
 
 def output_format(args, piped: str = "csv") -> str:
@@ -186,8 +199,7 @@ def write_outputs(text: str, args, plot=None, also=()) -> None:
             with open(tmp, "w", encoding="utf-8") as fh:
                 fh.write(text)
         else:
-            sys.stdout.write(text)
-            sys.stdout.flush()
+            say(text)
 
 
 def image_format(path: str) -> str:

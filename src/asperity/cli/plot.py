@@ -199,7 +199,7 @@ def _edges(values, log: bool):
 def run(args) -> None:
     from .._atomic import atomic_path
     from .._optional import require
-    from ._output import image_format
+    from ._output import image_format, say
 
     xr = require("xarray", purpose="asperity plot", extra="sweep")
     require("matplotlib", purpose="asperity plot", extra="plot")
@@ -223,4 +223,4 @@ def run(args) -> None:
         fmt = image_format(path)
         with atomic_path(path) as tmp:
             heat_map(ds, args.x, args.y, args.z, at, tmp, fmt)
-    print(f"wrote {path}")
+    say(f"wrote {path}\n")

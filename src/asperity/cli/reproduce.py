@@ -27,6 +27,7 @@ def run(args) -> None:
 
     from .._optional import require
     from ._args import UsageError
+    from ._output import say
 
     require("matplotlib", purpose="reproduce", extra="plot")
     from ..studies.report import reproduce
@@ -34,10 +35,10 @@ def run(args) -> None:
     start = time.perf_counter()
 
     def progress(message):
-        print(message, flush=True)
+        say(f"{message}\n")
 
     try:
         reproduce(args.out, progress=progress)
     except OSError as exc:
         raise UsageError(f"cannot write to {args.out!r}: {exc.strerror or exc}") from None
-    print(f"done in {time.perf_counter() - start:.1f} s: open {args.out}/index.html", flush=True)
+    say(f"done in {time.perf_counter() - start:.1f} s: open {args.out}/index.html\n")

@@ -162,6 +162,7 @@ def run(args) -> None:
 
     from ..sweeps import sweep
     from ..sweeps.compute import LOADS_NAN_NOTE
+    from ._output import say
 
     kwargs = sweep_arguments(args)
     progress = sys.stderr.isatty() if args.progress is None else args.progress
@@ -172,7 +173,7 @@ def run(args) -> None:
     partly = int((np.char.find(messages, LOADS_NAN_NOTE) >= 0).sum())  # computed, NaN at some loads
     total = int(messages.size)
     ds.close()
-    print(f"wrote {args.out}: {total} parameter sets"
-          + (f", {failed} outside the model's domain (NaN; see the message variable)" if failed else "")
-          + (f", {noted} with a validity note of the library (see the message variable)" if noted else "")
-          + (f", of which {partly} with NaN at the loads below their least load" if partly else ""))
+    say(f"wrote {args.out}: {total} parameter sets"
+        + (f", {failed} outside the model's domain (NaN; see the message variable)" if failed else "")
+        + (f", {noted} with a validity note of the library (see the message variable)" if noted else "")
+        + (f", of which {partly} with NaN at the loads below their least load" if partly else "") + "\n")

@@ -1,12 +1,13 @@
 """Which lines of a measured data file are its header, its data and its comments.
 
-Used by :mod:`asperity.fit.read`.  A line that starts with ``#`` or ``%`` is a comment, with
-two exceptions found by user trials and a review (each was lost before):
-
-* above the data, one that names a column the reader knows (``%RH,load (nN),friction (nN)``,
-  ``#,load (nN),friction (nN)``) is the header;
-* below the header, one that has as many cells as the header is a data row (a sample ID
-  ``#2 (retest)``; Excel's error values such as ``#N/A`` are always cells, read as NaN).
+Used by :mod:`asperity.fit.read`.  A line that starts with ``#`` or ``%`` is a comment, as
+pandas' ``comment='#'`` and ``numpy.loadtxt`` read it; below the header such lines are
+counted in a note (a user trial: a row '#2 (retest),...' vanished without a word), and
+Excel's error values (``#N/A``, ``#VALUE!``, ...) are cells, read as NaN, not comments.  One
+exception (a review): when the first line that is not a comment holds only numbers, the
+header is the nearest comment above it that names a column the reader knows, without its
+marker (``%RH,load (nN),friction (nN)``, ``% load (nN), friction (nN)``: a header a program
+marked as a comment).
 
 The delimiter is the one of comma, tab and semicolon that cuts the header and the first
 data lines into as many cells, the most cells if several do, a comma before a tab before
@@ -54,31 +55,36 @@ def _names_a_column(cell: str) -> bool:
     return role is not None or (base in condition_names() and not is_err)
 
 
+def _numbers_only(line: str) -> bool:
+    """Every cell a number (a decimal comma allowed in a ';' or tab line) or empty."""
+    d = next((d for d in (";", "\t", ",") if d in line), None)
+    parts = [c.strip() for c in (cells(line, d) if d else [line])]
+    try:
+        [float(c.replace(",", ".") if d != "," else c) for c in parts if c]
+    except ValueError:
+        return False
+    return True
+
+
 def split(text: str):
     """``(delimiter, lines, skipped)``: the header's and the data's ``(line number, text)``,
-    the header first, and the line numbers of comments below the header; None if the text
-    holds no header (empty, only comments).  Empty lines and a spreadsheet's empty rows
-    (``,,``) are dropped."""
+    the header first (without a comment marker it had), and the line numbers of comments
+    below the header; None if the text holds no header (empty, only comments).  Empty lines
+    and a spreadsheet's empty rows (``,,``) are dropped."""
     candidates = [(i + 1, line) for i, line in enumerate(text.splitlines()) if line.strip(" \t,;")]
-    start = None
-    for k, (_, line) in enumerate(candidates):
-        if not marked(line):
-            start = k
-            break
-        following = [other for _, other in candidates[k + 1:] if not marked(other)][:1]
-        if any(_names_a_column(c) for c in cells(line, delimiter(line, following))):
-            start = k
-            break
-    if start is None:
+    first = next((k for k, (_, line) in enumerate(candidates) if not marked(line)), None)
+    if first is None:
         return None
-    header = candidates[start][1]
-    body = candidates[start + 1:]
+    start, header = first, candidates[first][1]
+    if _numbers_only(header):  # data with its header behind a comment marker
+        for k in range(first - 1, -1, -1):
+            line = candidates[k][1].lstrip()[1:]
+            following = [candidates[first][1]]
+            if any(_names_a_column(c) for c in cells(line, delimiter(line, following))):
+                start, header = k, line
+                break
+    body = [(no, line) for no, line in candidates[start + 1:]]
     d = delimiter(header, [line for _, line in body if not marked(line)][:5])
-    n = len(cells(header, d))
-    lines, skipped = [candidates[start]], []
-    for no, line in body:
-        if marked(line) and len(cells(line, d)) != n:
-            skipped.append(no)
-        else:
-            lines.append((no, line))
+    lines = [(candidates[start][0], header)] + [(no, line) for no, line in body if not marked(line)]
+    skipped = [no for no, line in body if marked(line)]
     return d, lines, skipped

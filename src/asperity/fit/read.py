@@ -15,9 +15,8 @@ r"""Reading measured data from CSV files: columns found by their header names an
   and pull-off forces); an uncertainty column without a unit has its value column's unit.
 
 Comment lines start with ``#`` or ``%`` (those below the header are counted in a note;
-Excel's error values such as ``#N/A`` are cells, read as NaN; a marked line that names a
-column is the header, one below it with the header's number of cells a data row:
-:mod:`asperity.fit._lines`); the delimiter is a comma, a
+Excel's error values such as ``#N/A`` are cells, read as NaN; a header a program marked as
+a comment is found: :mod:`asperity.fit._lines`); the delimiter is a comma, a
 tab or a semicolon (that of the header line); in a semicolon-separated file a decimal comma
 (``4,25``) is read as a decimal point, with a note.  Columns with no name and no values (a
 spreadsheet's padding) are dropped; a column whose unit has the wrong dimension
