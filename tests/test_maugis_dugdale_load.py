@@ -207,10 +207,20 @@ def test_refusals_below_the_branch_are_in_si_units(lam):
     for f, name, unit, far in routes:
         with pytest.raises(ValueError) as info:
             f([1e-9, far], **kw)
-        m = re.fullmatch(rf"{re.escape(name)} must be >= (\S+) {unit} \(.*\), got (\S+) {unit} \(the first value "
-                         r"below its floor; each value's R, w, E\* set its own\)", str(info.value))
+        m = re.fullmatch(rf"{re.escape(name)} must be >= (\S+) {unit} \(.*\), got (\S+) {unit}", str(info.value))
         assert m and float(m.group(2)) == far, str(info.value)
         floor = float(m.group(1))
         assert np.isfinite(f(floor * (1 - 1e-4), **kw)).all()
         with pytest.raises(ValueError, match=f"must be >= {re.escape(m.group(1))} {unit}"):
             f(floor * (1 + 1e-4), **kw)
+
+
+def test_a_floor_that_differs_from_value_to_value_says_so():
+    """A review: with arrays of R one value's floor was printed as the floor of all."""
+    from asperity.maugis_dugdale_load import md_contact_radius
+
+    with pytest.raises(ValueError, match=r"got -1e-07 N \(the first value below its floor; each value's R, w, E\* "
+                                         r"set its own\)$"):
+        md_contact_radius([-1e-7, -1e-7], R=[1e-6, 1e-8], w=0.1, E_star=1e9, lam=1.0)
+    with pytest.raises(ValueError, match=r"got -1e-06 N$"):
+        md_contact_radius([-1e-6, 1e-9], R=20e-9, w=0.1, E_star=100e9, lam=1.0)

@@ -204,9 +204,8 @@ def bracket_low(tab: Tabulation, P_max, d_lo, d_hi) -> tuple[float, Tabulation]:
     ----------
     Adams et al., Eqs (6), (18).
     """
-    P_max = check_scalar_real(P_max, "P_max")
-    _check_floor(check_scalar_real(d_lo, "d_lo"), P_max, tab.params)
     d_lo, d_hi = check_tabulation(tab, d_lo, d_hi, covered=False)
+    P_max = check_scalar_real(P_max, "P_max")
     while True:
         tab = tab.extended(d_lo, d_hi)
         if tab.sums(np.array([d_lo]))[0][0, 1] > P_max:

@@ -124,5 +124,8 @@ def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: s
     floor, k = fh * v / vh, 6
     while k < 17 and f"{floor:.{k}g}" == f"{v:.{k}g}":  # digits enough to tell them apart
         k += 1
-    which = " (the first value below its floor; each value's R, w, E* set its own)" if bad.size > 1 else ""
+    with np.errstate(all="ignore"):
+        floors = (floor_hat * value / value_hat)[value_hat != 0]
+    varied = floors.size > 1 and np.ptp(floors) > 1e-12 * abs(floor)  # R, w, E* or lambda vary
+    which = " (the first value below its floor; each value's R, w, E* set its own)" if varied else ""
     raise ValueError(f"{name} must be >= {floor:.{k}g} {unit} ({what}), got {v:.{k}g} {unit}{which}")

@@ -493,6 +493,10 @@ def test_a_trailing_delimiter_and_a_long_marked_file(tmp_path, monkeypatch):
     kw = {"physical_sizes": ("4um", "3um"), "unit": "nm"}
     plain = read_topography(tmp_path / "plain.txt", **kw)
     np.testing.assert_array_equal(read_topography(tmp_path / "t.csv", **kw).heights(), plain.heights())
-    monkeypatch.setattr(_textfile, "MAX_TEXT", 500)
+    size = len((tmp_path / "plain.txt").read_bytes())
+    monkeypatch.setattr(_textfile, "MAX_TEXT", size // 2)
     (tmp_path / "b.txt").write_bytes(b"\xef\xbb\xbf" + (tmp_path / "plain.txt").read_bytes())
     np.testing.assert_array_equal(read_topography(tmp_path / "b.txt", **kw).heights(), plain.heights())
+    monkeypatch.setattr(_textfile, "MAX_TEXT", size // 8)  # beyond four times the limit: refused, not cut
+    with pytest.raises(ValueError, match=r"b\.txt: a text map of more than \d+ MB; save it in a binary format"):
+        read_topography(tmp_path / "b.txt", **kw)

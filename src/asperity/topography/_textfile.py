@@ -34,7 +34,10 @@ def open_bytes(name):
         fobj.seek(0)
         return fobj
     with fobj:  # a marked file whole (cut, it would lose its end: a review); a delimited one up to MAX_TEXT
-        raw = head + fobj.read(-1 if encoding is not None else MAX_TEXT)
+        raw = head + fobj.read(4 * MAX_TEXT if encoding is not None else MAX_TEXT)
+    if encoding is not None and len(raw) > 4 * MAX_TEXT:
+        raise ValueError(f"{name}: a text map of more than {4 * MAX_TEXT // 2**20} MB; save it in a binary format "
+                         "(.npy, NetCDF)")
     if encoding is None and len(raw) > MAX_TEXT:
         return open(name, "rb")
     try:
