@@ -59,8 +59,12 @@ def _numbers_only(line: str) -> bool:
     """Every cell a number (a decimal comma allowed in a ';' or tab line) or empty."""
     d = next((d for d in (";", "\t", ",") if d in line), None)
     parts = [c.strip() for c in (cells(line, d) if d else [line])]
+    return all(_is_number(c if d == "," else c.replace(",", ".")) for c in parts if c)
+
+
+def _is_number(text: str) -> bool:
     try:
-        [float(c.replace(",", ".") if d != "," else c) for c in parts if c]
+        float(text)
     except ValueError:
         return False
     return True
@@ -79,11 +83,10 @@ def split(text: str):
     if _numbers_only(header):  # data with its header behind a comment marker
         for k in range(first - 1, -1, -1):
             line = candidates[k][1].lstrip()[1:]
-            following = [candidates[first][1]]
-            if any(_names_a_column(c) for c in cells(line, delimiter(line, following))):
+            if any(_names_a_column(c) for c in cells(line, delimiter(line, [header]))):
                 start, header = k, line
                 break
-    body = [(no, line) for no, line in candidates[start + 1:]]
+    body = candidates[start + 1:]
     d = delimiter(header, [line for _, line in body if not marked(line)][:5])
     lines = [(candidates[start][0], header)] + [(no, line) for no, line in body if not marked(line)]
     skipped = [no for no, line in body if marked(line)]

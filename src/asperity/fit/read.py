@@ -16,18 +16,18 @@ r"""Reading measured data from CSV files: columns found by their header names an
 
 Comment lines start with ``#`` or ``%`` (those below the header are counted in a note;
 Excel's error values such as ``#N/A`` are cells, read as NaN; a header a program marked as
-a comment is found: :mod:`asperity.fit._lines`); the delimiter is a comma, a
-tab or a semicolon (that of the header line); in a semicolon-separated file a decimal comma
-(``4,25``) is read as a decimal point, with a note.  Columns with no name and no values (a
-spreadsheet's padding) are dropped; a column whose unit has the wrong dimension
-(``lateral force (V)``) is ignored beside one of the right dimension, else refused.
-Refused, with a :class:`ValueError` naming the row and column: a missing, unreadable or
-empty file (UTF-8 or, with its byte-order mark, UTF-16 text), a missing or ambiguous column (``F`` and ``mu``; ``P`` and
-``load [mN]``), a non-numeric or infinite cell, a NaN (empty) cell unless
-``drop_nan=True`` (then the row is dropped and counted), negative friction or
-coefficient, a coefficient at a load <= 0, a zero or negative uncertainty or pull-off
-force, an unknown unit or one of the wrong dimension, dimensionless and physical columns
-mixed, a column unit that contradicts ``units``.  Columns that are none of these are
+a comment is found: :mod:`asperity.fit._lines`); the delimiter is a comma, a tab or a
+semicolon (the one that cuts header and data alike); in a semicolon-separated file a
+decimal comma (``4,25``) is read as a decimal point, with a note.  Columns with no name
+and no values (a spreadsheet's padding) are dropped; a column whose unit has the wrong
+dimension (``lateral force (V)``) is ignored beside one of the right dimension, else
+refused.  The text is UTF-8, or UTF-16 with its byte-order mark.  Refused, with a
+:class:`ValueError` naming the line and column: a missing, unreadable or empty file, a
+missing or ambiguous column (``F`` and ``mu``; ``P`` and ``load [mN]``), a non-numeric
+or infinite cell, a NaN (empty) cell unless ``drop_nan=True`` (then the row is dropped
+and counted), negative friction or coefficient, a coefficient at a load <= 0, a zero or
+negative uncertainty or pull-off force, an unknown unit or one of the wrong dimension,
+dimensionless and physical columns mixed, a column unit that contradicts ``units``.  Columns that are none of these are
 ignored and named in :attr:`Dataset.notes`.
 """
 
