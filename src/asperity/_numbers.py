@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["strict_float", "FloatUnderflow"]
+__all__ = ["strict_float", "is_number", "apart", "FloatUnderflow"]
 
 #: A decimal number as written in ASCII: what :func:`strict_float` reads (with nan, inf).
 _DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
@@ -49,3 +49,21 @@ def strict_float(text: str) -> float:
     if value == 0.0 and re.search(r"[1-9]", stripped.split("e")[0].split("E")[0]):
         raise FloatUnderflow(f"{text!r} is smaller than the smallest double (about 5e-324): it would be read as 0")
     return value
+
+
+def is_number(text: str) -> bool:
+    """Whether :func:`strict_float` reads ``text`` (a cell of a data file, say)."""
+    try:
+        strict_float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def apart(a: float, b: float) -> int:
+    """The significant digits, 6 to 17, that print ``a`` and ``b`` differently (a limit and the
+    value beyond it in a message: 'must be >= -6.43759e-05 ... got -6.43759e-05' said nothing)."""
+    k = 6
+    while k < 17 and f"{a:.{k}g}" == f"{b:.{k}g}":
+        k += 1
+    return k

@@ -40,7 +40,9 @@ __all__ = ["CurveResult", "COLUMNS", "PullOff", "Model", "separation_curve", "lo
 #: Most loads or separations one curve takes (as on the command line): beyond, a curve costs
 #: minutes and gigabytes (1e7 loads: 146 s, 3.6 GB), so it is refused at once.
 MAX_POINTS = 10**6
-PULL_OFF_RTOL = 1e-12  #: loads this far (relative) below minus the pull-off force are taken as it
+#: Loads this far (relative) below minus the pull-off force are taken as it (a fresh pull_off() differs by rounding).
+PULL_OFF_RTOL = 1e-12
+
 
 class Model:
     """The multi-asperity contact and friction model for one parameter set, cached.
@@ -189,12 +191,9 @@ class Model:
             branch = stable_branch(self._tab, d_lo, d_hi, d_top=self.d_top, P_min=float(P.min()),
                                    pull_off=branch.pull_off)
         self._tab = branch.tab
-        # The branch's grid spans [d_lo <= -3, d_hi]: the pull-off search it made (or its finding
-        # that the force stays compressive there) serves pull_off() too.
-        self._pull_off.setdefault(d_hi, branch.pull_off if branch.pull_off is not None
-                                  else PullOff(0.0, float("nan"), False))
+        # the branch's pull-off search over [d_lo <= -3, d_hi] (or its finding of none) serves pull_off() too
+        self._pull_off.setdefault(d_hi, branch.pull_off or PullOff(0.0, float("nan"), False))
         floor = branch.P[-1]
-        # another search's pull-off (a fresh pull_off(): its table differs) may lie just below
         if P.min() < floor - PULL_OFF_RTOL * abs(floor):
             d_end = None if floor < 0 else float(branch.grid[-1])
             what = "minus the pull-off force" if d_end is None else f"the force at d/sigma = {d_end:.4g}"

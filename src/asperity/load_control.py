@@ -30,6 +30,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ._numbers import apart
 from ._validation import check_integer, check_scalar_real
 from .asperity_law import U_END_LIMIT, ModelParameters, check_parameters
 from .branch_inversion import branch_guess, invert_branch
@@ -74,9 +75,7 @@ class LoadOutOfRange(ValueError):
         self.units, self.d_end = units, d_end
 
     def __str__(self) -> str:
-        k = 6  # enough digits to tell the load from the floor
-        while k < 17 and f"{self.floor:.{k}g}" == f"{self.got:.{k}g}":
-            k += 1
+        k = apart(self.floor, self.got)
         floor, got = (f"{x:.{k}g}{self.units}" for x in (self.floor, self.got))
         bound = f"> {floor}" if self.exclusive else f">= {floor}"
         return f"P (load) must be {bound} ({self.what}): no equilibrium under a smaller load; got min {got}"

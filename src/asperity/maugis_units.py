@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._numbers import apart
 from ._validation import as_float_array, check_broadcast, check_finite_result, check_positive
 from .units import to_si
 
@@ -121,9 +122,8 @@ def check_floor_in_si(value, value_hat, floor_hat, name: str, unit: str, what: s
         return
     i = np.flatnonzero(bad.reshape(-1))[0]
     v, vh, fh = (x.reshape(-1)[i] for x in (value, value_hat, floor_hat))
-    floor, k = fh * v / vh, 6
-    while k < 17 and f"{floor:.{k}g}" == f"{v:.{k}g}":  # digits enough to tell them apart
-        k += 1
+    floor = fh * v / vh
+    k = apart(floor, v)
     with np.errstate(all="ignore"):
         floors = (floor_hat * value / value_hat)[value_hat != 0]
     varied = floors.size > 1 and np.ptp(floors) > 1e-12 * abs(floor)  # R, w, E* or lambda vary

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import csv
 
+from .._numbers import is_number
 from .headers import classify_header, condition_names
 
 #: Excel's error values: data cells (NaN, dropped with drop_nan), never comments.
@@ -59,15 +60,7 @@ def _numbers_only(line: str) -> bool:
     """Every cell a number (a decimal comma allowed in a ';' or tab line) or empty."""
     d = next((d for d in (";", "\t", ",") if d in line), None)
     parts = [c.strip() for c in (cells(line, d) if d else [line])]
-    return all(_is_number(c if d == "," else c.replace(",", ".")) for c in parts if c)
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
+    return all(is_number(c if d == "," else c.replace(",", ".")) for c in parts if c)
 
 
 def split(text: str):

@@ -13,6 +13,7 @@ import re
 
 import numpy as np
 
+from .._numbers import is_number
 from .._validation import as_float_array, check_output_path, check_path, check_text
 from ..units import strict_float
 
@@ -74,8 +75,8 @@ def read_samples(path) -> np.ndarray:
         try:
             x = strict_float(text)
         except ValueError:
-            numeric = all(_is_number(cell) for cell in text.replace(";", ",").split(",")) or \
-                all(_is_number(cell) for cell in text.split())
+            numeric = all(is_number(cell) for cell in text.replace(";", ",").split(",")) or \
+                all(is_number(cell) for cell in text.split())
             # text made of number characters ('1_0e-9', '5e-400') is a bad number, not a header
             looks_numeric = re.fullmatch(r"[\d\s.eE+\-_,;]+", text) is not None
             if first and not numeric and not looks_numeric:  # a header (a row of numbers is not one)
@@ -91,14 +92,6 @@ def read_samples(path) -> np.ndarray:
         return check_samples(np.array(values, dtype=float), "summit heights")
     except ValueError as err:
         raise ValueError(f"{name}: {err}") from None
-
-
-def _is_number(text: str) -> bool:
-    try:
-        strict_float(text)
-    except ValueError:
-        return False
-    return True
 
 
 def write_samples(path, samples, header: str = "z") -> None:
